@@ -1,0 +1,48 @@
+// Dense convex QP in the form the controller builds every cycle:
+//
+//   minimise    1/2 x' H x + g' x
+//   subject to  A_eq x = b_eq                   (n_eq rows used)
+//               c_lb <= C x <= c_ub             (n_in rows used; +-inf = no bound)
+//               x_lb <= x <= x_ub               (+-inf = no bound)
+//
+// Storage is reserved once at a capacity (reserve); the number of rows in use
+// may change between cycles without allocating: only the top n_eq / n_in rows
+// of A_eq / C are read. Not thread safe; one problem per controller.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace handover::control {
+
+struct QpProblem {
+  int n = 0;       ///< variables
+  int n_eq = 0;    ///< equality rows in use
+  int n_in = 0;    ///< two-sided inequality rows in use
+
+  Eigen::MatrixXd H;     ///< n x n, symmetric positive definite
+  Eigen::VectorXd g;     ///< n
+  Eigen::MatrixXd A_eq;  ///< capacity_eq x n
+  Eigen::VectorXd b_eq;  ///< capacity_eq
+  Eigen::MatrixXd C;     ///< capacity_in x n
+  Eigen::VectorXd c_lb;  ///< capacity_in
+  Eigen::VectorXd c_ub;  ///< capacity_in
+  Eigen::VectorXd x_lb;  ///< n
+  Eigen::VectorXd x_ub;  ///< n
+
+  /// Sizes all storage (allocates; call at start-up), zeroes it, and sets
+  /// n_eq = n_in = 0 and unbounded variables.
+  void reserve(int num_vars, int capacity_eq, int capacity_in);
+  int capacityEq() const { return static_cast<int>(A_eq.rows()); }
+  int capacityIn() const { return static_cast<int>(C.rows()); }
+};
+
+enum class QpStatus {
+  kOptimal,         ///< solution satisfies the KKT conditions
+  kInfeasible,      ///< constraints cannot all hold
+  kMaxIterations,   ///< iteration limit reached; x is not a solution
+  kInvalidProblem,  ///< NaN/inf in data, H not positive definite, or sizes wrong
+};
+
+const char* toString(QpStatus status);
+
+}  // namespace handover::control
