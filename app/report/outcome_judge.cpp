@@ -1,0 +1,116 @@
+#include "app/report/outcome_judge.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace handover::app {
+
+OutcomeJudge::OutcomeJudge(JudgeSettings settings, std::size_t expected_steps) : s_(std::move(settings)) {
+  step_us_.reserve(expected_steps);
+  states_.reserve(64);
+}
+
+bool OutcomeJudge::heldByRobot(const StepFacts& f) const {
+  return f.left_finger_on_object && f.right_finger_on_object;
+}
+
+void OutcomeJudge::observe(const StepFacts& f) {
+  last_time_ = f.time;
+  const bool robot_holds = heldByRobot(f);
+
+  // contacts: count onsets, so one long touch is one contact
+  const bool touching = f.robot_human_contacts > 0;
+  if (touching && !in_contact_) ++contacts_;
+  in_contact_ = touching;
+  min_dist_ = std::min(min_dist_, f.min_human_distance);
+
+  // drops: touching table/floor, or falling with nobody holding it
+  const bool nobody_holds = !f.hand_holds_object && !robot_holds;
+  if (f.object_on_table || f.object_on_floor || (nobody_holds && f.object_vel.z() < -s_.fall_speed)) {
+    dropped_ = true;
+  }
+
+  lim_.position += f.position_violation ? 1 : 0;
+  lim_.velocity += f.velocity_violation ? 1 : 0;
+  lim_.torque += f.torque_violation ? 1 : 0;
+  qp_failures_ += f.qp_failed ? 1 : 0;
+
+  // the person's hand at rest (for hand_still_to_grasp)
+  if (f.hand_speed < s_.hand_rest_speed) {
+    if (rest_since_ < 0.0) rest_since_ = f.time;
+    if (awaiting_rest_after_grasp_ && grasp_time_) {
+      still_to_grasp_ = *grasp_time_ - rest_since_;  // negative: grasped before the hand settled
+      awaiting_rest_after_grasp_ = false;
+    }
+  } else {
+    rest_since_ = -1.0;
+  }
+
+  // grasp: the fingers close on the object (first time both touch while closing)
+  if (s_.mode == "human_to_robot" && !grasp_time_ && robot_holds && f.gripper_closing) {
+    grasp_time_ = f.time;
+    grasp_pos_err_ = f.grasp_pos_error;
+    grasp_rot_err_ = f.grasp_rot_error_deg;
+    if (rest_since_ >= 0.0) still_to_grasp_ = f.time - rest_since_;
+    else awaiting_rest_after_grasp_ = true;
+  }
+
+  // physical exchange, held for hold_time
+  bool transfer = false;
+  if (s_.mode == "human_to_robot") {
+    transfer = robot_holds && !f.hand_holds_object && (f.object_pos - f.hand_pos).norm() > s_.away_from_hand;
+  } else {
+    transfer = f.hand_holds_object && !f.left_finger_on_object && !f.right_finger_on_object;
+  }
+  if (transfer) {
+    if (!transfer_now_) transfer_since_ = f.time;
+    if (f.time - transfer_since_ + 1e-9 >= s_.hold_time) exchanged_ = true;
+  }
+  transfer_now_ = transfer;
+
+  if (f.state && (states_.empty() || states_.back() != *f.state)) states_.push_back(*f.state);
+  step_us_.push_back(f.step_us);
+}
+
+RunSummary OutcomeJudge::finish(bool fsm_done, const std::string& fsm_outcome, int handovers, int aborts,
+                                int retries, double wall_seconds) {
+  RunSummary r;
+  r.mode = s_.mode;
+  r.handovers = handovers;
+  r.aborts = aborts;
+  r.retries = retries;
+  r.time_to_grasp = grasp_time_;
+  r.hand_still_to_grasp = still_to_grasp_;
+  r.min_human_distance = min_dist_ >= 1e8 ? std::nan("") : min_dist_;
+  r.human_contacts = contacts_;
+  r.object_dropped = dropped_;
+  r.limit_violations = lim_;
+  r.qp_failures = qp_failures_;
+  r.grasp_error_pos = grasp_pos_err_;
+  r.grasp_error_rot_deg = grasp_rot_err_;
+  r.states = states_;
+  r.simulated_time = last_time_;
+  r.realtime_factor = wall_seconds > 0.0 ? last_time_ / wall_seconds : 0.0;
+  if (!step_us_.empty()) {
+    std::vector<double> v = step_us_;
+    std::sort(v.begin(), v.end());
+    auto pct = [&](double p) { return v[std::min(v.size() - 1, static_cast<std::size_t>(p * (v.size() - 1) + 0.5))]; };
+    r.control_step_us = {pct(0.5), pct(0.99), v.back()};
+  }
+
+  // the robot must also have finished (retracted) for a success
+  const bool robot_finished = fsm_done && fsm_outcome == "success";
+  const bool exchange_done = exchanged_ && transfer_now_;
+  if (robot_finished && exchange_done) r.total_time = last_time_;
+
+  // verdict, worst first
+  if (lim_.position + lim_.velocity + lim_.torque > 0 || qp_failures_ > 0) r.outcome = "unsafe";
+  else if (dropped_) r.outcome = "object_drop";
+  else if (contacts_ > 0) r.outcome = "hand_contact";
+  else if (robot_finished && exchange_done) r.outcome = "success";
+  else if (fsm_done && fsm_outcome == "aborted") r.outcome = "aborted";
+  else r.outcome = "timeout";
+  return r;
+}
+
+}  // namespace handover::app

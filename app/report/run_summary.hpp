@@ -1,0 +1,46 @@
+// The result of one run: every key of design-notes section 4 (summary.json).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace handover::app {
+
+struct LimitViolations {
+  int position = 0;  ///< control steps with a joint beyond its position limit
+  int velocity = 0;  ///< ... beyond its velocity limit
+  int torque = 0;    ///< ... with a commanded torque beyond its limit
+};
+
+struct TimingStats {
+  double median = 0.0, p99 = 0.0, max = 0.0;  ///< microseconds
+};
+
+struct RunSummary {
+  std::string scenario;
+  std::string mode;             ///< human_to_robot | robot_to_human
+  std::string outcome = "error";///< success | aborted | hand_contact | object_drop | timeout | unsafe | error
+  std::string error_message;    ///< set when outcome == error
+  int handovers = 0, aborts = 0, retries = 0;
+  std::optional<double> time_to_grasp;        ///< s
+  std::optional<double> hand_still_to_grasp;  ///< s, negative: grasped while the hand moved
+  std::optional<double> total_time;           ///< s, start to handover complete and retracted
+  double min_human_distance = 0.0;            ///< m
+  int human_contacts = 0;
+  bool object_dropped = false;
+  LimitViolations limit_violations;
+  int qp_failures = 0;
+  std::optional<double> grasp_error_pos;      ///< m
+  std::optional<double> grasp_error_rot_deg;  ///< deg
+  std::vector<std::string> states;            ///< visited, in order
+  TimingStats control_step_us;
+  double realtime_factor = 0.0;
+  double simulated_time = 0.0;                ///< s actually simulated
+  std::vector<std::string> expectation_failures;  ///< unmet `expect:` lines (exit 1)
+
+  bool success() const { return outcome == "success"; }
+  std::string toJson() const;
+};
+
+}  // namespace handover::app

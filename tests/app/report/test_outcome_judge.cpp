@@ -1,0 +1,123 @@
+#include "app/report/outcome_judge.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace handover::app {
+namespace {
+
+// A scripted human-to-robot exchange at 1 kHz: the hand settles at t_rest,
+// the robot closes at t_grasp, the person lets go at t_release and the
+// gripper carries the object away.
+struct Script {
+  double t_rest = 1.0, t_grasp = 1.5, t_release = 2.0, t_end = 3.0;
+  bool touch_person = false;
+  bool drop = false;
+  bool qp_fail = false;
+};
+
+RunSummary play(const Script& sc, const std::string& fsm_outcome = "success") {
+  JudgeSettings js;
+  OutcomeJudge judge(js, 4000);
+  const std::string approach = "H2R/Approach", grasp = "H2R/Grasp", retract = "H2R/Retract";
+  for (int i = 0; i <= static_cast<int>(sc.t_end * 1000); ++i) {
+    StepFacts f;
+    f.time = i * 1e-3;
+    f.hand_pos = Eigen::Vector3d(0.5, 0, 0.3);
+    f.hand_speed = f.time < sc.t_rest ? 0.5 : 0.0;
+    const bool closed = f.time >= sc.t_grasp;
+    f.gripper_closing = closed;
+    f.left_finger_on_object = f.right_finger_on_object = closed && !sc.drop;
+    f.hand_holds_object = f.time < sc.t_release;
+    // after release the gripper carries the object away from the hand
+    const double away = f.time > sc.t_release ? (f.time - sc.t_release) * 0.3 : 0.0;
+    f.object_pos = f.hand_pos + Eigen::Vector3d(-away, 0, 0.02);
+    if (sc.drop && f.time > sc.t_release) f.object_on_table = true;
+    f.robot_human_contacts = (sc.touch_person && std::abs(f.time - 1.2) < 0.01) ? 1 : 0;
+    f.qp_failed = sc.qp_fail && i == 100;
+    f.min_human_distance = 0.2 - 0.01 * std::min(f.time, 1.0);
+    f.state = f.time < sc.t_grasp ? &approach : (f.time < sc.t_release ? &grasp : &retract);
+    f.step_us = 10.0 + (i % 10);
+    judge.observe(f);
+  }
+  return judge.finish(true, fsm_outcome, 1, 0, 0, 1.0);
+}
+
+TEST(OutcomeJudge, CleanExchangeIsSuccessWithTimings) {
+  const RunSummary r = play(Script{});
+  EXPECT_EQ(r.outcome, "success");
+  ASSERT_TRUE(r.time_to_grasp.has_value());
+  EXPECT_NEAR(*r.time_to_grasp, 1.5, 1e-9);
+  ASSERT_TRUE(r.hand_still_to_grasp.has_value());
+  EXPECT_NEAR(*r.hand_still_to_grasp, 0.5, 1e-9);
+  EXPECT_NEAR(r.min_human_distance, 0.19, 1e-9);
+  ASSERT_EQ(r.states.size(), 3u);
+  EXPECT_EQ(r.states[1], "H2R/Grasp");
+  EXPECT_NEAR(r.control_step_us.max, 19.0, 1e-9);
+  ASSERT_TRUE(r.total_time.has_value());
+}
+
+TEST(OutcomeJudge, GraspWhileHandMovesGivesNegativeStillTime) {
+  Script sc;
+  sc.t_rest = 1.8;  // hand still moving at the grasp (1.5)
+  const RunSummary r = play(sc);
+  ASSERT_TRUE(r.hand_still_to_grasp.has_value());
+  EXPECT_NEAR(*r.hand_still_to_grasp, -0.3, 1e-9);
+}
+
+TEST(OutcomeJudge, TouchingThePersonIsHandContact) {
+  Script sc;
+  sc.touch_person = true;
+  const RunSummary r = play(sc);
+  EXPECT_EQ(r.outcome, "hand_contact");
+  EXPECT_EQ(r.human_contacts, 1);  // one touch lasting several steps counts once
+}
+
+TEST(OutcomeJudge, ObjectOnTableIsDrop) {
+  Script sc;
+  sc.drop = true;
+  const RunSummary r = play(sc);
+  EXPECT_EQ(r.outcome, "object_drop");
+  EXPECT_TRUE(r.object_dropped);
+}
+
+TEST(OutcomeJudge, QpFailureIsUnsafe) {
+  Script sc;
+  sc.qp_fail = true;
+  const RunSummary r = play(sc);
+  EXPECT_EQ(r.outcome, "unsafe");
+  EXPECT_EQ(r.qp_failures, 1);
+}
+
+TEST(OutcomeJudge, NoExchangeAndFsmNotDoneIsTimeout) {
+  Script sc;
+  sc.t_release = 10.0;  // the person never lets go
+  const RunSummary r = play(sc);
+  EXPECT_EQ(r.outcome, "timeout");
+  EXPECT_FALSE(r.total_time.has_value());
+}
+
+TEST(OutcomeJudge, RobotNotFinishedIsNotSuccess) {
+  const RunSummary r = play(Script{}, "aborted");
+  EXPECT_EQ(r.outcome, "aborted");
+}
+
+TEST(OutcomeJudge, RobotToHumanNeedsObjectInHandAndFingersOff) {
+  JudgeSettings js;
+  js.mode = "robot_to_human";
+  OutcomeJudge judge(js);
+  for (int i = 0; i <= 1000; ++i) {
+    StepFacts f;
+    f.time = i * 1e-3;
+    const bool given = f.time > 0.5;
+    f.hand_holds_object = given;
+    f.left_finger_on_object = f.right_finger_on_object = !given;
+    judge.observe(f);
+  }
+  EXPECT_TRUE(judge.exchanged());
+  EXPECT_EQ(judge.finish(true, "success", 1, 0, 0, 0.5).outcome, "success");
+}
+
+}  // namespace
+}  // namespace handover::app
