@@ -8,11 +8,18 @@
 // Storage is reserved once at a capacity (reserve); the number of rows in use
 // may change between cycles without allocating: only the top n_eq / n_in rows
 // of A_eq / C are read. Not thread safe; one problem per controller.
+//
+// A lower side <= -kQpInfinity or an upper side >= kQpInfinity is absent. A
+// row with c_lb == c_ub (or x_lb == x_ub) is an equality. NaN is never
+// allowed. Units are the caller's; the solver's tolerances are relative.
 #pragma once
 
 #include <Eigen/Core>
 
 namespace handover::control {
+
+/// Sides at or beyond this magnitude (lower <= -it, upper >= it) are absent.
+constexpr double kQpInfinity = 1e20;
 
 struct QpProblem {
   int n = 0;       ///< variables
@@ -30,7 +37,8 @@ struct QpProblem {
   Eigen::VectorXd x_ub;  ///< n
 
   /// Sizes all storage (allocates; call at start-up), zeroes it, and sets
-  /// n_eq = n_in = 0 and unbounded variables.
+  /// n_eq = n_in = 0, unbounded rows and unbounded variables.
+  /// Throws InputError for num_vars < 1 or negative capacities.
   void reserve(int num_vars, int capacity_eq, int capacity_in);
   int capacityEq() const { return static_cast<int>(A_eq.rows()); }
   int capacityIn() const { return static_cast<int>(C.rows()); }
@@ -43,6 +51,7 @@ enum class QpStatus {
   kInvalidProblem,  ///< NaN/inf in data, H not positive definite, or sizes wrong
 };
 
+/// Lower-case name ("optimal", "infeasible", ...) for logs and result files.
 const char* toString(QpStatus status);
 
 }  // namespace handover::control
