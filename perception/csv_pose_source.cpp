@@ -1,0 +1,76 @@
+#include "perception/csv_pose_source.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "config/input_error.hpp"
+#include "perception/pose_codec.hpp"
+
+namespace handover::perception {
+
+const char* poseCsvHeader() {
+  return "t,hand_x,hand_y,hand_z,hand_qw,hand_qx,hand_qy,hand_qz,"
+         "forearm_x,forearm_y,forearm_z,forearm_qw,forearm_qx,forearm_qy,forearm_qz,"
+         "upper_arm_x,upper_arm_y,upper_arm_z,upper_arm_qw,upper_arm_qx,upper_arm_qy,upper_arm_qz";
+}
+
+void writePoseCsv(const std::string& path, const std::vector<PoseSample>& samples) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path + ": cannot open for writing");
+  out << poseCsvHeader() << "\n";
+  char line[kMaxEncodedSample];
+  for (const PoseSample& s : samples) {
+    encodeSample(s, ',', line, sizeof line);
+    out << line << "\n";
+  }
+  if (!out) throw InputError(path + ": write failed");
+}
+
+std::vector<PoseSample> readPoseCsv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open file");
+  std::vector<PoseSample> out;
+  std::string line;
+  int lineno = 0;
+  bool header_seen = false;
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    if (!header_seen) {
+      if (line != poseCsvHeader()) {
+        throw InputError(path + ":" + std::to_string(lineno) + ": expected the header '" + poseCsvHeader() + "'");
+      }
+      header_seen = true;
+      continue;
+    }
+    PoseSample s;
+    const char* err = decodeSample(line.c_str(), ',', s);
+    if (err) throw InputError(path + ":" + std::to_string(lineno) + ": " + err);
+    if (!out.empty() && s.stamp < out.back().stamp) {
+      throw InputError(path + ":" + std::to_string(lineno) + ": time stamp goes back");
+    }
+    out.push_back(s);
+  }
+  if (!header_seen) throw InputError(path + ": empty file (no header)");
+  return out;
+}
+
+CsvPoseSource::CsvPoseSource(const std::string& path, double time_shift)
+    : samples_(readPoseCsv(path)), shift_(time_shift) {}
+
+CsvPoseSource::CsvPoseSource(std::vector<PoseSample> samples, double time_shift)
+    : samples_(std::move(samples)), shift_(time_shift) {}
+
+bool CsvPoseSource::poll(double now, PoseSample& out) {
+  if (next_ >= samples_.size() || now + 1e-12 < samples_[next_].stamp + shift_) return false;
+  out = samples_[next_++];
+  out.stamp += shift_;
+  return true;
+}
+
+}  // namespace handover::perception

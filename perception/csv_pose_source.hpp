@@ -1,0 +1,42 @@
+// CSV replay of timestamped pose samples (format: docs/perception.md).
+// One header line, then one sample per line, 22 comma-separated numbers:
+//   t, hand_{x,y,z,qw,qx,qy,qz}, forearm_{...}, upper_arm_{...}
+// t in s, positions in m (world), quaternions body-to-world. Lines starting
+// with '#' and blank lines are skipped. Numbers are written with 17
+// significant digits so a round trip is exact.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "perception/pose_source.hpp"
+
+namespace handover::perception {
+
+/// The header line the files start with.
+const char* poseCsvHeader();
+
+/// Writes samples to `path`; throws InputError if the file cannot be written.
+void writePoseCsv(const std::string& path, const std::vector<PoseSample>& samples);
+
+/// Reads a pose CSV; throws InputError "file:line: ..." on a bad header, a
+/// wrong column count, a non-number, a non-unit quaternion or stamps that go back.
+std::vector<PoseSample> readPoseCsv(const std::string& path);
+
+/// Replays a file: sample i is delivered once now >= stamp_i + time_shift.
+/// Loading is start-up only; poll() is real-time safe.
+class CsvPoseSource : public PoseSource {
+ public:
+  explicit CsvPoseSource(const std::string& path, double time_shift = 0.0);
+  CsvPoseSource(std::vector<PoseSample> samples, double time_shift);
+  bool poll(double now, PoseSample& out) override;
+  std::size_t size() const { return samples_.size(); }
+  std::size_t delivered() const { return next_; }
+
+ private:
+  std::vector<PoseSample> samples_;
+  double shift_;
+  std::size_t next_ = 0;
+};
+
+}  // namespace handover::perception

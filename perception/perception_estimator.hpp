@@ -1,0 +1,76 @@
+// Keeps the latest pose sample of the person and derives the object's pose.
+// Never extrapolates: a sample older than max_age is reported stale, and the
+// consumer decides what to do (hold, slow down). Who holds the object decides
+// where its pose comes from: the person's hand (hand pose * hand->object
+// offset, as old as the hand sample) or the robot's forward kinematics (TCP
+// pose * grasp offset, always fresh). Perception writes estimates, never commands.
+// World frame, m, s. All methods after construction are real-time safe.
+#pragma once
+
+#include <Eigen/Geometry>
+
+#include "perception/pose_source.hpp"
+
+namespace handover::perception {
+
+struct EstimatorSettings {
+  double max_age = 0.1;  ///< s; samples older than this are stale
+  /// Object pose in the person's hand frame while the person holds it.
+  Eigen::Isometry3d hand_T_object = Eigen::Isometry3d::Identity();
+};
+
+enum class ObjectHolder { Nobody, Person, Robot };
+
+struct HumanEstimate {
+  bool valid = false;  ///< a sample has arrived since the start
+  bool stale = true;   ///< no sample, or the latest is older than max_age
+  double stamp = 0.0;  ///< s, measurement time of the latest sample
+  double age = 0.0;    ///< s, now - stamp (0 if none)
+  Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d forearm = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d upper_arm = Eigen::Isometry3d::Identity();
+};
+
+struct ObjectEstimate {
+  bool valid = false;  ///< the pose is known (someone holds it and, for the person, a sample exists)
+  bool stale = true;   ///< derived from a stale hand sample
+  ObjectHolder holder = ObjectHolder::Nobody;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< object frame in the world
+};
+
+struct PerceptionEstimate {
+  double time = 0.0;
+  HumanEstimate human;
+  ObjectEstimate object;
+};
+
+class PerceptionEstimator {
+ public:
+  explicit PerceptionEstimator(const EstimatorSettings& settings = {});
+  void reset();
+
+  /// Takes a sample if it is finite and not older than the latest one.
+  bool addSample(const PoseSample& s);
+  /// Drains `source` of everything that arrived by `now`; returns how many were taken.
+  int update(double now, PoseSource& source);
+  /// Changes where the object sits in the hand (e.g. after the person re-grasps).
+  void setHandObjectOffset(const Eigen::Isometry3d& hand_T_object) { settings_.hand_T_object = hand_T_object; }
+
+  /// The estimate at `now`. `tcp_pose` (world) and `tcp_T_object` are used only
+  /// when the robot holds the object.
+  const PerceptionEstimate& estimate(double now, ObjectHolder holder,
+                                     const Eigen::Isometry3d& tcp_pose = Eigen::Isometry3d::Identity(),
+                                     const Eigen::Isometry3d& tcp_T_object = Eigen::Isometry3d::Identity());
+
+  long rejected() const { return rejected_; }  ///< samples refused (non-finite or out of order)
+  const EstimatorSettings& settings() const { return settings_; }
+
+ private:
+  EstimatorSettings settings_;
+  bool have_ = false;
+  PoseSample latest_;
+  PerceptionEstimate est_;
+  long rejected_ = 0;
+};
+
+}  // namespace handover::perception

@@ -1,0 +1,86 @@
+#include "scenes/scenario/scenario_check.hpp"
+
+#include <sstream>
+
+#include "config/input_error.hpp"
+
+namespace handover::scenario {
+
+void failAt(const SourceRef& where, const std::string& message) {
+  std::ostringstream os;
+  os << where.file;
+  if (where.line > 0) os << ":" << where.line;
+  os << ": ";
+  if (!where.key.empty()) os << "key '" << where.key << "': ";
+  os << message;
+  throw InputError(os.str());
+}
+
+namespace {
+
+void checkReach(const Scenario& s, const Eigen::Vector3d& shoulder, const BodyDimensions& body,
+                const Eigen::Vector3d& target, const SourceRef& where, const char* what) {
+  const double d = (target - shoulder).norm();
+  std::ostringstream os;
+  os.precision(3);
+  if (d > body.reach()) {
+    os << what << " (" << target.x() << ", " << target.y() << ", " << target.z() << ") is " << d
+       << " m from the " << (s.human.hand == HandSide::Right ? "right" : "left") << " shoulder at ("
+       << shoulder.x() << ", " << shoulder.y() << ", " << shoulder.z() << "); a " << body.height
+       << " m person reaches " << body.reach() << " m";
+    failAt(where, os.str());
+  }
+  if (d < kMinShoulderToGrip) {
+    os << what << " is " << d << " m from the shoulder; the hand cannot be that close to it";
+    failAt(where, os.str());
+  }
+  if (target.z() < kFloorZ + 0.05) failAt(where, std::string(what) + " is below the floor");
+}
+
+}  // namespace
+
+void checkScenario(const Scenario& s) {
+  const HumanSpec& h = s.human;
+  // who holds the object at the start must fit the direction of the handover
+  if (s.mode == Mode::HumanToRobot) {
+    if (s.robot.holds_object) failAt(s.robot_holds_where, "human_to_robot: the robot must start empty (holds_object: false)");
+    if (!h.holds_object) failAt(s.mode_where, "human_to_robot: the person must start holding the object (human.holds_object)");
+  } else {
+    if (!s.robot.holds_object) failAt(s.robot_holds_where, "robot_to_human: the robot must start holding the object (robot.holds_object: true)");
+    if (h.holds_object) failAt(h.holds_where, "robot_to_human: the person's hand must start empty (remove human.holds_object)");
+  }
+
+  const BodyDimensions body = bodyDimensionsFromHeight(h.height);
+  const Eigen::Vector3d shoulder = shoulderPosition(body, h.stand_pos, h.stand_yaw, h.hand);
+  checkReach(s, shoulder, body, h.start.translation(), h.start_where, "start hand position");
+
+  // walk the script, tracking the hand position and whether it holds the object
+  Eigen::Vector3d hand = h.start.translation();
+  bool holding = h.holds_object.has_value();
+  for (const ScriptStep& st : h.script) {
+    switch (st.kind) {
+      case StepKind::Reach:
+      case StepKind::Withdraw:
+        hand = st.pos;
+        checkReach(s, shoulder, body, hand, st.target_where, st.kind == StepKind::Reach ? "reach target" : "withdraw target");
+        break;
+      case StepKind::Pull:
+        hand += st.dir * st.distance;
+        checkReach(s, shoulder, body, hand, st.target_where, "pull end");
+        break;
+      case StepKind::Release:
+        if (!holding) failAt(st.where, "release: the hand holds nothing at this point of the script");
+        holding = false;
+        break;
+      case StepKind::Grasp:
+        if (holding) failAt(st.where, "grasp: the hand already holds the object at this point of the script");
+        holding = true;  // if it succeeds; a missed grasp leaves the hand empty at run time
+        break;
+      case StepKind::Hold:
+      case StepKind::Wait:
+        break;
+    }
+  }
+}
+
+}  // namespace handover::scenario

@@ -1,0 +1,314 @@
+#include "scenes/scenario/scenario_parser.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "config/yaml_reader.hpp"
+#include "scenes/scenario/scenario_check.hpp"
+
+namespace handover::scenario {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+SourceRef refOf(const YamlReader& r) { return {r.file(), r.path(), r.line()}; }
+
+double positive(const YamlReader& r) {
+  const double v = r.asDouble();
+  if (!(v > 0.0)) r.fail("must be > 0, got " + r.node().Scalar());
+  return v;
+}
+double nonNegative(const YamlReader& r) {
+  const double v = r.asDouble();
+  if (v < 0.0) r.fail("must be >= 0, got " + r.node().Scalar());
+  return v;
+}
+int nonNegativeInt(const YamlReader& r) {
+  const int v = r.asInt();
+  if (v < 0) r.fail("must be >= 0, got " + r.node().Scalar());
+  return v;
+}
+
+// {pos: [x, y, z], rpy: [r, p, y]} with rpy optional (identity when missing)
+Eigen::Isometry3d readPose(const YamlReader& r) {
+  if (!r.isMap()) r.fail("expected a map {pos: [x, y, z], rpy: [r, p, y]}");
+  const Eigen::Vector3d pos = r.child("pos").asVector(3);
+  Eigen::Vector3d rpy = Eigen::Vector3d::Zero();
+  if (auto c = r.optionalChild("rpy")) rpy = c->asVector(3);
+  r.finish();
+  return poseFromPosRpy(pos, rpy);
+}
+
+// an empty step body may be written `release:` or `release: {}`
+void expectEmpty(const YamlReader& r) {
+  if (r.isNull()) return;
+  if (!r.isMap()) r.fail("expected {} (this step takes no settings)");
+  r.finish();
+}
+
+ScriptStep readStep(const YamlReader& item) {
+  if (!item.isMap() || item.size() != 1) {
+    item.fail("a script step is a map with exactly one of: reach, withdraw, hold, wait, release, grasp, pull");
+  }
+  const std::string kind = item.keys().front();
+  ScriptStep s;
+  const YamlReader body = item.child(kind);
+  s.where = refOf(body);
+  auto needMap = [&]() {
+    if (!body.isMap()) body.fail("expected a map of settings");
+  };
+  if (kind == "reach" || kind == "withdraw") {
+    needMap();
+    s.kind = kind == "reach" ? StepKind::Reach : StepKind::Withdraw;
+    const YamlReader pos = body.child("pos");
+    s.pos = pos.asVector(3);
+    s.target_where = refOf(pos);
+    if (auto r = body.optionalChild("rpy")) s.rpy = Eigen::Vector3d(r->asVector(3));
+    s.duration = positive(body.child("duration"));
+  } else if (kind == "hold") {
+    needMap();
+    s.kind = StepKind::Hold;
+    s.duration = nonNegative(body.child("duration"));
+  } else if (kind == "wait") {
+    needMap();
+    s.kind = StepKind::Wait;
+    const std::string u = body.child("until").asEnum({"fingers_on_object", "object_free", "object_in_reach"});
+    s.until = u == "fingers_on_object" ? WaitUntil::FingersOnObject
+              : u == "object_free"     ? WaitUntil::ObjectFree
+                                       : WaitUntil::ObjectInReach;
+    if (auto t = body.optionalChild("timeout")) s.timeout = positive(*t);
+    if (auto d = body.optionalChild("delay")) {
+      s.delay = nonNegative(*d);
+      if (s.timeout && s.delay >= *s.timeout) d->fail("delay must be shorter than timeout, or the wait can never fire");
+    }
+  } else if (kind == "release" || kind == "grasp") {
+    s.kind = kind == "release" ? StepKind::Release : StepKind::Grasp;
+    expectEmpty(body);
+    return s;
+  } else if (kind == "pull") {
+    needMap();
+    s.kind = StepKind::Pull;
+    const YamlReader dir = body.child("dir");
+    const Eigen::Vector3d d = dir.asVector(3);
+    if (d.norm() < 1e-9) dir.fail("direction must not be zero");
+    s.dir = d.normalized();
+    const YamlReader dist = body.child("distance");
+    s.distance = positive(dist);
+    s.target_where = refOf(dist);
+    s.duration = positive(body.child("duration"));
+  } else {
+    YamlReader(item.node().begin()->first, item.file(), item.path() + "." + kind)
+        .fail("unknown script step '" + kind + "' (allowed: reach, withdraw, hold, wait, release, grasp, pull)");
+  }
+  body.finish();
+  return s;
+}
+
+void readObject(const YamlReader& r, ObjectSpec& o) {
+  if (!r.isMap()) r.fail("expected a map");
+  const std::string shape = r.child("shape").asEnum({"cylinder", "box", "sphere"});
+  o.shape = shape == "cylinder" ? Shape::Cylinder : shape == "box" ? Shape::Box : Shape::Sphere;
+  const YamlReader size = r.child("size");
+  const int n = o.shape == Shape::Cylinder ? 2 : o.shape == Shape::Box ? 3 : 1;
+  if (!size.isSequence() || static_cast<int>(size.size()) != n) {
+    const char* what = o.shape == Shape::Cylinder ? "[radius, height]" : o.shape == Shape::Box ? "[x, y, z] edges" : "[radius]";
+    size.fail("a " + shape + " needs size " + what + " (" + std::to_string(n) + " numbers)");
+  }
+  const Eigen::VectorXd v = size.asVector(n);
+  o.size.assign(v.data(), v.data() + n);
+  for (int i = 0; i < n; ++i) {
+    if (!(v[i] > 0.0)) size.at(static_cast<std::size_t>(i)).fail("sizes must be > 0");
+    if (v[i] > 1.0) size.at(static_cast<std::size_t>(i)).fail("sizes above 1 m are not a hand-held object");
+  }
+  const YamlReader mass = r.child("mass");
+  o.mass = positive(mass);
+  if (o.mass > 5.0) mass.fail("mass above 5 kg exceeds what the Panda hands over (payload 3 kg)");
+  if (auto g = r.optionalChild("grasp")) o.grasp = readPose(*g);
+  if (auto a = r.optionalChild("free_axis")) {
+    const std::string ax = a->asEnum({"x", "y", "z"});
+    o.free_axis = ax[0] - 'x';
+  }
+  r.finish();
+}
+
+void readRobot(const YamlReader& r, Scenario& s) {
+  if (!r.isMap()) r.fail("expected a map");
+  if (auto q = r.optionalChild("start_q")) {
+    const Vector7 v = q->asVector(7);
+    // Panda joint limits (facts file)
+    const double lo[7] = {-2.8973, -1.7628, -2.8973, -3.0718, -2.8973, -0.0175, -2.8973};
+    const double hi[7] = {2.8973, 1.7628, 2.8973, -0.0698, 2.8973, 3.7525, 2.8973};
+    for (int i = 0; i < 7; ++i) q->at(static_cast<std::size_t>(i)).checkRange(v[i], lo[i], hi[i]);
+    s.robot.start_q = v;
+  }
+  if (auto h = r.optionalChild("holds_object")) {
+    s.robot.holds_object = h->asBool();
+    s.robot_holds_where = refOf(*h);
+  } else {
+    s.robot_holds_where = refOf(r);
+  }
+  r.finish();
+}
+
+void readHuman(const YamlReader& r, HumanSpec& h) {
+  if (!r.isMap()) r.fail("expected a map");
+  const YamlReader stand = r.child("stand");
+  if (!stand.isMap()) stand.fail("expected {pos: [x, y], yaw: rad}");
+  h.stand_pos = stand.child("pos").asVector(2);
+  h.stand_yaw = stand.getDouble("yaw", h.stand_yaw);
+  stand.finish();
+  const YamlReader height = r.child("height");
+  h.height = height.checkRange(height.asDouble(), 1.2, 2.2);
+  const std::string hand = r.getString("hand", "right");
+  if (hand != "right" && hand != "left") r.child("hand").asEnum({"right", "left"});
+  h.hand = hand == "right" ? HandSide::Right : HandSide::Left;
+  const YamlReader start = r.child("start");
+  h.start = readPose(start);
+  h.start_where = refOf(start.child("pos"));
+  if (auto ho = r.optionalChild("holds_object")) {
+    if (!ho->isNull()) {
+      h.holds_object = readPose(*ho);
+      h.holds_where = refOf(*ho);
+    }
+  }
+  const YamlReader script = r.child("script");
+  if (!script.isSequence()) script.fail("expected a list of steps");
+  if (script.size() == 0) script.fail("the script needs at least one step");
+  for (std::size_t i = 0; i < script.size(); ++i) h.script.push_back(readStep(script.at(i)));
+  r.finish();
+}
+
+void readSensor(const YamlReader& r, perception::SensorSettings& s) {
+  if (!r.isMap()) r.fail("expected a map");
+  if (auto c = r.optionalChild("rate_hz")) {
+    s.rate_hz = positive(*c);
+    if (s.rate_hz > 1000.0) c->fail("rate above 1000 Hz is faster than the control loop");
+  }
+  if (auto c = r.optionalChild("latency")) {
+    s.latency = nonNegative(*c);
+    if (s.latency > 1.0) c->fail("latency above 1 s is not a tracking sensor");
+  }
+  if (auto n = r.optionalChild("noise")) {
+    if (!n->isMap()) n->fail("expected {pos: m, rot_deg: deg}");
+    if (auto c = n->optionalChild("pos")) s.noise_pos = nonNegative(*c);
+    if (auto c = n->optionalChild("rot_deg")) s.noise_rot_deg = nonNegative(*c);
+    n->finish();
+  }
+  if (auto d = r.optionalChild("dropouts")) {
+    if (!d->isSequence()) d->fail("expected a list of [begin, end] intervals");
+    double prev_end = -kInf;
+    for (std::size_t i = 0; i < d->size(); ++i) {
+      const YamlReader iv = d->at(i);
+      const Eigen::VectorXd v = iv.asVector(2);
+      if (v[0] < 0.0) iv.fail("interval begins before t = 0");
+      if (!(v[1] > v[0])) iv.fail("interval must end after it begins");
+      if (v[0] < prev_end) iv.fail("intervals must be ordered and must not overlap");
+      prev_end = v[1];
+      s.dropouts.emplace_back(v[0], v[1]);
+    }
+  }
+  if (auto o = r.optionalChild("offset")) s.offset = readPose(*o);
+  r.finish();
+}
+
+void readExpect(const YamlReader& r, Expectations& e, double duration) {
+  if (!r.isMap()) r.fail("expected a map");
+  if (auto c = r.optionalChild("outcome"))
+    e.outcome = c->asEnum({"success", "aborted", "hand_contact", "object_drop", "timeout", "unsafe", "error"});
+  if (auto c = r.optionalChild("aborts")) e.aborts = nonNegativeInt(*c);
+  if (auto c = r.optionalChild("retries")) e.retries = nonNegativeInt(*c);
+  if (auto c = r.optionalChild("handovers")) e.handovers = nonNegativeInt(*c);
+  if (auto c = r.optionalChild("max_total_time")) {
+    e.max_total_time = positive(*c);
+    if (*e.max_total_time > duration) c->fail("longer than the scenario's duration");
+  }
+  if (auto c = r.optionalChild("min_human_distance")) e.min_human_distance = nonNegative(*c);
+  if (auto c = r.optionalChild("max_time_to_grasp")) e.max_time_to_grasp = positive(*c);
+  if (auto c = r.optionalChild("max_human_contacts")) e.max_human_contacts = nonNegativeInt(*c);
+  if (auto c = r.optionalChild("object_dropped")) e.object_dropped = c->asBool();
+  r.finish();
+}
+
+std::string resolveConfig(const YamlReader& r, const std::string& scenario_file) {
+  const std::string given = r.asString();
+  if (given.empty()) r.fail("empty path");
+  fs::path p(given);
+  std::vector<fs::path> tried;
+  if (p.is_absolute()) {
+    tried.push_back(p);
+  } else {
+    tried.push_back(fs::path(scenario_file).parent_path() / p);
+    tried.push_back(fs::path(HANDOVER_SOURCE_DIR) / p);
+  }
+  for (const auto& t : tried) {
+    std::error_code ec;
+    if (fs::is_regular_file(t, ec)) return t.lexically_normal().string();
+  }
+  std::string list;
+  for (const auto& t : tried) list += (list.empty() ? "" : ", ") + t.string();
+  r.fail("config file '" + given + "' not found (looked at " + list + ")");
+}
+
+Scenario readScenario(const YamlReader& root) {
+  if (!root.isMap()) root.fail("a scenario file is a map of keys (name, mode, duration, ...)");
+  Scenario s;
+  s.file = root.file();
+  s.name = root.getString("name");
+  if (s.name.empty()) root.child("name").fail("name must not be empty");
+  const YamlReader mode = root.child("mode");
+  s.mode = mode.asEnum({"human_to_robot", "robot_to_human"}) == "human_to_robot" ? Mode::HumanToRobot
+                                                                                 : Mode::RobotToHuman;
+  s.mode_where = refOf(mode);
+  const YamlReader duration = root.child("duration");
+  s.duration = positive(duration);
+  if (s.duration > 600.0) duration.fail("longer than 600 s of simulated time");
+  if (auto c = root.optionalChild("seed")) s.seed = nonNegativeInt(*c);
+
+  // controller config: given, else the default if it exists; `set:` needs one
+  std::optional<YamlReader> cfg = root.optionalChild("config");
+  if (cfg) s.config_path = resolveConfig(*cfg, s.file);
+  else if (fs::is_regular_file(defaultConfigPath())) s.config_path = defaultConfigPath();
+  if (!s.config_path.empty()) {
+    try {
+      s.config = YAML::LoadFile(s.config_path);
+    } catch (const YAML::Exception& e) {
+      throw InputError(s.config_path + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+    }
+  }
+  if (auto set = root.optionalChild("set")) {
+    if (s.config_path.empty()) {
+      set->fail("no controller config to apply overrides to: give `config:` (" + defaultConfigPath() +
+                " does not exist)");
+    }
+    if (!set->isMap()) set->fail("expected a map of dotted config keys to values");
+    applyOverrides(s.config, *set, s.config_path);
+    s.overrides = YAML::Clone(set->node());
+  }
+
+  readObject(root.child("object"), s.object);
+  if (auto r = root.optionalChild("robot")) readRobot(*r, s);
+  else s.robot_holds_where = refOf(root);
+  readHuman(root.child("human"), s.human);
+  if (auto r = root.optionalChild("sensor")) readSensor(*r, s.sensor);
+  if (auto r = root.optionalChild("expect")) readExpect(*r, s.expect, s.duration);
+  root.finish();
+  checkScenario(s);
+  return s;
+}
+
+}  // namespace
+
+std::string defaultConfigPath() { return (fs::path(HANDOVER_SOURCE_DIR) / "config" / "controller.yaml").string(); }
+
+Scenario parseScenario(const std::string& path) { return readScenario(YamlReader::loadFile(path)); }
+
+Scenario parseScenarioString(const std::string& text, const std::string& origin) {
+  return readScenario(YamlReader::loadString(text, origin));
+}
+
+}  // namespace handover::scenario
