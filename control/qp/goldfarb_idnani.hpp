@@ -55,7 +55,7 @@ class GoldfarbIdnaniSolver final : public QpSolver {
   double rhs(QpRowKind kind, int index) const;  // b of the side
   double slack(QpRowKind kind, int index) const;  // n'x - b at x_
   double normalNorm(QpRowKind kind, int index) const;
-  void computeDirections();                     // d_, z_, r_ from np_ for the current active set
+  void computeDirections(QpRowKind kind, int index);  // d_, z_, r_ for the current active set
   double tail2() const;                         // |d_2|^2 (part of d_ outside the active span)
   bool dependent(double d2sq, double np_norm) const;
   void appendActive(QpRowKind kind, int index, double multiplier, bool is_equality);
