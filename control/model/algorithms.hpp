@@ -44,6 +44,8 @@ void crba(const Model& model, Data& data);
 Vector7 rnea(const Model& model, Data& data, const Vector7& a);
 
 /// Attaches / removes the held object's mass to body 7 (affects M, h, g from the next computeAll).
+/// Real-time safe for a valid payload; throws handover::InputError for a negative or
+/// non-finite mass, com or inertia. A new payload replaces the previous one.
 void setPayload(const Model& model, Data& data, const Payload& payload);
 void clearPayload(const Model& model, Data& data);
 

@@ -71,7 +71,18 @@ struct Model {
 /// Loads the model from a URDF. Throws handover::InputError whose message
 /// names the file and what is wrong (missing file, parse error, a joint or
 /// link that is not where the Panda chain needs it, missing limits).
+/// The chain is walked from "panda_link0" through one revolute joint per body;
+/// everything below link 7 must hang on fixed joints or the two prismatic
+/// finger joints (set to finger_opening / 2 each). Frames: every URDF link by
+/// name, plus the aliases "hand" (panda_hand), "tcp" (panda_tcp) and
+/// "ft_sensor" (panda_ft_sensor), which must exist. Collision <cylinder>s are
+/// read as capsules (docs/robot-description.md); a_max comes from the Panda
+/// datasheet table in urdf_loader.cpp (URDF has no acceleration limit).
+/// Not real-time safe (reads a file, allocates).
 Model loadModel(const std::string& urdf_path);
+
+/// Same, with the fingers merged into body 7 at another total opening (m, clamped to 0..max).
+Model loadModel(const std::string& urdf_path, double finger_opening);
 
 /// A rigid payload held by the gripper (the object), attached to body 7.
 struct Payload {
@@ -99,6 +110,11 @@ struct Data {
 
   bool has_payload = false;
   Inertia body7_with_payload;     ///< body 7 inertia + payload, refreshed by setPayload / clearPayload
+
+  // written by forwardKinematics, read by crba / rnea
+  std::array<Vector3, kNumBodies> axis_world;       ///< joint i's unit axis in world axes (index 0 unused)
+  std::array<Vector3, kNumBodies> com_world;        ///< body com in the world (body 7 incl. payload), m
+  std::array<Matrix3, kNumBodies> inertia_world;    ///< body inertia about its com, world axes, kg m^2
 
   // internal scratch for the algorithms (RNEA/CRBA); sized here, reused
   std::array<Vector6, kNumBodies> scratch_v, scratch_a, scratch_f;
