@@ -1,0 +1,210 @@
+#include "control/controller.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "control/qp/goldfarb_idnani.hpp"
+
+namespace handover::control {
+
+namespace {
+
+FormulationCapacity controllerCapacity() {
+  FormulationCapacity c;
+  c.max_tasks = 16;
+  c.max_constraints = 16;
+  c.max_constraint_rows = 256;  // room for collision pairs added by the application
+  return c;
+}
+
+}  // namespace
+
+Controller::Controller(Model model, const ControllerConfig& config, std::unique_ptr<QpSolver> solver)
+    : model_(std::move(model)),
+      data_(model_),
+      config_(config),
+      formulation_(controllerCapacity()),
+      solver_(std::move(solver)),
+      x_(Eigen::VectorXd::Zero(kNumVars)),
+      obs_A_(Eigen::MatrixXd::Zero(6, kNumVars)),
+      obs_b_(Eigen::VectorXd::Zero(6)) {
+  if (!solver_) solver_ = std::make_unique<GoldfarbIdnaniSolver>();
+  QpSolverOptions options = solver_->options();
+  options.max_iterations = config_.qp.max_iterations;
+  solver_->setOptions(options);
+
+  tcp_id_ = model_.frameId(config_.frame);
+  const auto& c = config_;
+  observation_ = std::make_shared<ObservationTask>("observation", c.observation.gains, c.observation.gains);
+  tracking_ = std::make_shared<TrajectoryTrackingTask>(model_, "tracking", c.frame, c.tracking.translation.gains,
+                                                       c.tracking.orientation.gains);
+  posture_ = std::make_shared<PostureTask>("posture", c.posture.gains, c.posture.target);
+  pose_ = std::make_shared<EndEffectorPoseTask>(model_, "pose", c.frame, c.pose_task.translation.gains,
+                                                c.pose_task.orientation.gains);
+
+  Vector6 w;
+  formulation_.addTask(observation_, c.observation.weight);
+  w << c.tracking.translation.weights, c.tracking.orientation.weights;
+  formulation_.addTask(tracking_, c.tracking.weight, w);
+  formulation_.addTask(posture_, c.posture.weight);
+  w << c.pose_task.translation.weights, c.pose_task.orientation.weights;
+  formulation_.addTask(pose_, c.pose_task.weight, w);
+  formulation_.setTaskEnabled("pose", false);
+  formulation_.setRegularisation(c.qp.regularisation);
+
+  // order matters: later bounds give way to earlier ones (bound_tightening.hpp)
+  accel_limit_ = std::make_shared<JointAccelerationLimit>(model_, c.limits.acceleration_scale);
+  position_limit_ = std::make_shared<JointPositionLimit>(model_, c.limits.position);
+  velocity_limit_ = std::make_shared<JointVelocityLimit>(model_, c.limits.velocity_scale);
+  torque_limit_ = std::make_shared<JointTorqueLimit>(model_, c.limits.torque_scale);
+  formulation_.addConstraint(accel_limit_);
+  formulation_.addConstraint(position_limit_);
+  formulation_.addConstraint(velocity_limit_);
+  formulation_.addConstraint(torque_limit_);
+
+  formulation_.reserveProblem(problem_);
+  solver_->reserve(kNumVars, problem_.capacityEq(), problem_.capacityIn());
+
+  ControlInputs start;
+  start.q = c.posture.target;
+  reset(start);
+}
+
+void Controller::reset(const ControlInputs& in) {
+  time_ = in.time;
+  computeAll(model_, data_, in.q, in.qd);
+  const Isometry X_tcp = framePlacement(model_, data_, tcp_id_);
+  const Isometry X_obs = X_tcp * tracking_->graspOffset().placement.inverse();
+  integrator_.reset(X_obs);
+  observation_->setTarget(X_obs);
+  has_observation_ = false;
+  pose_->setTarget(X_tcp);
+  position_limit_->reset();
+  solver_->resetWarmStart();
+  qdd_.setZero();
+  tau_ = data_.h;
+  status_ = QpStatus::kOptimal;
+  iterations_ = 0;
+  fell_back_ = false;
+  fallback_count_ = 0;
+  fallback_streak_ = 0;
+}
+
+ControlContext Controller::context(double time) const {
+  ControlContext ctx;
+  ctx.model = &model_;
+  ctx.data = &data_;
+  ctx.time = time;
+  ctx.dt = config_.period;
+  ctx.observed = integrator_.state();
+  return ctx;
+}
+
+const Vector7& Controller::step(const ControlInputs& in) {
+  fell_back_ = false;
+  if (!(in.q.allFinite() && in.qd.allFinite() && std::isfinite(in.time))) {
+    // keep the last valid kinematics: the damped stop uses the last known state
+    status_ = QpStatus::kInvalidProblem;
+    iterations_ = 0;
+    fallback("non-finite joint state");
+    return tau_;
+  }
+  time_ = in.time;
+
+  // compute once, then tasks and constraints only read
+  computeAll(model_, data_, in.q, in.qd);
+  const ControlContext ctx = context(in.time);
+  formulation_.build(ctx, problem_);
+
+  status_ = solver_->solve(problem_, x_);
+  iterations_ = solver_->result().iterations;
+  if (status_ != QpStatus::kOptimal || !x_.allFinite()) {
+    fallback(solver_->result().message);
+    return tau_;
+  }
+  fallback_streak_ = 0;
+  qdd_ = x_.head<kArmDofs>();
+  integrator_.integrate(x_.segment<kObjDofs>(VariableLayout::kObs), config_.period);
+  tau_.noalias() = data_.M * qdd_;
+  tau_ += data_.h;
+  return tau_;
+}
+
+void Controller::fallback(const char* why) {
+  fell_back_ = true;
+  ++fallback_count_;
+  ++fallback_streak_;
+
+  // damped stop within the acceleration limits, torque from the model
+  const Vector7 a_lim = config_.limits.acceleration_scale * model_.a_max;
+  qdd_ = (-config_.fallback.damping * data_.v).cwiseMax(-a_lim).cwiseMin(a_lim);
+  tau_.noalias() = data_.M * qdd_;
+  tau_ += data_.h;
+  const Vector7 t_lim = config_.limits.torque_scale * model_.tau_max;
+  tau_ = tau_.cwiseMax(-t_lim).cwiseMin(t_lim);
+
+  // the observed object keeps following its reference model on its own
+  const ControlContext ctx = context(time_);
+  obs_A_.setZero();
+  observation_->compute(ctx, obs_A_, obs_b_);
+  integrator_.integrate(Vector6(obs_b_), config_.period);
+
+  if (fallback_streak_ == 1 || fallback_streak_ % 1000 == 0)
+    std::fprintf(stderr, "controller: t=%.3f s: QP %s%s%s; damped stop (fallback %ld)\n", time_, toString(status_),
+                 (why && why[0]) ? ": " : "", why ? why : "", fallback_count_);
+}
+
+void Controller::setObservationTarget(const Isometry& pose, bool valid) {
+  if (!valid || !pose.matrix().allFinite()) return;  // hold the last target, no extrapolation
+  observation_->setTarget(pose);
+  has_observation_ = true;
+}
+
+void Controller::resetObservedObject(const Isometry& pose, const Vector6& velocity) {
+  if (!pose.matrix().allFinite() || !velocity.allFinite()) return;
+  integrator_.reset(pose, velocity);
+}
+
+void Controller::setGraspOffset(const GraspOffset& offset) {
+  GraspOffset o = offset;
+  const double n = o.free_axis.norm();
+  if (!(n > 1e-9) || !o.free_axis.allFinite()) {
+    o.has_free_axis = false;
+    o.free_axis = Vector3::UnitZ();
+  } else {
+    o.free_axis /= n;
+  }
+  tracking_->setGraspOffset(o);
+}
+
+bool Controller::setTaskEnabled(const std::string& name, bool enabled) {
+  if (!formulation_.hasTask(name)) return false;
+  formulation_.setTaskEnabled(name, enabled);
+  return true;
+}
+
+bool Controller::setConstraintEnabled(const std::string& name, bool enabled) {
+  if (!formulation_.hasConstraint(name)) return false;
+  formulation_.setConstraintEnabled(name, enabled);
+  return true;
+}
+
+void Controller::setPayload(const Payload& payload) { control::setPayload(model_, data_, payload); }
+
+void Controller::clearPayload() { control::clearPayload(model_, data_); }
+
+void Controller::setSpeedScale(double s) {
+  if (!std::isfinite(s)) return;
+  velocity_limit_->setSpeedScale(std::min(1.0, std::max(1e-3, s)));
+}
+
+GraspFrameState Controller::graspFrame() const {
+  const ObservedState& obs = integrator_.state();
+  return graspFrameState(obs, obs.acceleration, tracking_->graspOffset(), tcpPose().linear());
+}
+
+Isometry Controller::tcpPose() const { return framePlacement(model_, data_, tcp_id_); }
+
+Vector6 Controller::tcpVelocity() const { return frameVelocity(model_, data_, tcp_id_); }
+
+}  // namespace handover::control

@@ -1,0 +1,145 @@
+// The task-space QP controller (paper section II), run every control period:
+//
+//   computeAll(q, qdot) -> tasks and constraints fill one QP over
+//   chi = [qddot (7); alphadot_obs (6)] -> solve -> integrate the observed
+//   object with alphadot_obs -> tau = M qddot + h (payload included).
+//
+// Tasks (names): "observation", "tracking", "posture", "pose" (disabled at
+// start). Constraints: "joint_acceleration", "joint_position",
+// "joint_velocity", "joint_torque"; more (e.g. collision) may be added through
+// formulation(). If the QP fails (any status but optimal) or the inputs hold
+// NaN/inf, the controller falls back to a damped stop
+// qddot = -kd qdot clipped to the acceleration limits; fallbacks are counted
+// and logged (rate-limited) with the QP status.
+//
+// Frames: world (design notes 1); spatial vectors [linear; angular]; SI.
+// Real-time safety: step() and every set*/read-out method allocate nothing
+// and never throw. The constructor and reset() are start-up calls.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "control/constraints/joint_acceleration_limit.hpp"
+#include "control/constraints/joint_position_limit.hpp"
+#include "control/constraints/joint_torque_limit.hpp"
+#include "control/constraints/joint_velocity_limit.hpp"
+#include "control/controller_config.hpp"
+#include "control/formulation/formulation.hpp"
+#include "control/qp/qp_solver.hpp"
+#include "control/tasks/end_effector_pose_task.hpp"
+#include "control/tasks/grasp_frame.hpp"
+#include "control/tasks/observation_task.hpp"
+#include "control/tasks/observed_object_integrator.hpp"
+#include "control/tasks/posture_task.hpp"
+#include "control/tasks/trajectory_tracking_task.hpp"
+
+namespace handover::control {
+
+/// What the controller reads each period (from the arm's sensors).
+struct ControlInputs {
+  double time = 0.0;             ///< s
+  Vector7 q = Vector7::Zero();   ///< rad
+  Vector7 qd = Vector7::Zero();  ///< rad/s
+};
+
+class Controller {
+ public:
+  /// Copies the model. `solver` defaults to the Goldfarb-Idnani solver.
+  /// Throws InputError / std::out_of_range on a config that does not fit the model.
+  Controller(Model model, const ControllerConfig& config, std::unique_ptr<QpSolver> solver = nullptr);
+
+  /// Starts from the arm state `in`: the observed object is placed so that
+  /// its grasp frame coincides with the TCP (at rest), the observation and
+  /// pose targets are set there, limit dampers and the warm start forgotten.
+  void reset(const ControlInputs& in);
+
+  /// One control period. Returns the joint torques (N m). Real-time safe.
+  const Vector7& step(const ControlInputs& in);
+
+  // -- commands (real-time safe) ------------------------------------------
+  /// Measured object (or hand) pose in the world. Invalid or non-finite
+  /// measurements are ignored: the last valid target is held.
+  void setObservationTarget(const Isometry& pose, bool valid);
+  /// Moves the observed object (e.g. when the observation switches target).
+  void resetObservedObject(const Isometry& pose, const Vector6& velocity = Vector6::Zero());
+  void setGraspOffset(const GraspOffset& offset);
+  /// Task and constraint switches by name; false if the name is unknown.
+  bool setTaskEnabled(const std::string& name, bool enabled);
+  bool setConstraintEnabled(const std::string& name, bool enabled);
+  void setPoseTarget(const Isometry& target) { pose_->setTarget(target); }
+  void setPostureTarget(const Vector7& q_ref) { posture_->setTarget(q_ref); }
+  void setPayload(const Payload& payload);
+  void clearPayload();
+  /// Scales the joint velocity limits by s in (0, 1] (clamped).
+  void setSpeedScale(double s);
+
+  // -- read-outs (real-time safe) -----------------------------------------
+  const ObservedState& observedState() const { return integrator_.state(); }
+  const Isometry& observationTarget() const { return observation_->target(); }
+  bool hasValidObservation() const { return has_observation_; }
+  /// Grasp frame pose / velocity / acceleration (last solved alphadot_obs).
+  GraspFrameState graspFrame() const;
+  Isometry tcpPose() const;
+  Vector6 tcpVelocity() const;
+  const Vector7& lastQdd() const { return qdd_; }
+  const Vector7& lastTau() const { return tau_; }
+  QpStatus lastStatus() const { return status_; }
+  int lastIterations() const { return iterations_; }
+  bool lastStepFellBack() const { return fell_back_; }
+  long fallbackCount() const { return fallback_count_; }
+  /// [e_p (m); e_o (rad, or axis error in free-axis mode)] of the tracking task.
+  const Vector6& trackingError() const { return tracking_->error(); }
+
+  // -- access for tests, logging and additional tasks ---------------------
+  const Model& model() const { return model_; }
+  const Data& data() const { return data_; }
+  const ControllerConfig& config() const { return config_; }
+  Formulation& formulation() { return formulation_; }
+  const QpProblem& problem() const { return problem_; }
+  QpSolver& solver() { return *solver_; }
+  ObservationTask& observationTask() { return *observation_; }
+  TrajectoryTrackingTask& trackingTask() { return *tracking_; }
+  PostureTask& postureTask() { return *posture_; }
+  EndEffectorPoseTask& poseTask() { return *pose_; }
+  JointPositionLimit& positionLimit() { return *position_limit_; }
+  JointVelocityLimit& velocityLimit() { return *velocity_limit_; }
+
+ private:
+  void fallback(const char* why);
+  ControlContext context(double time) const;
+
+  const Model model_;
+  Data data_;
+  ControllerConfig config_;
+  Formulation formulation_;
+  QpProblem problem_;
+  std::unique_ptr<QpSolver> solver_;
+  int tcp_id_ = 0;
+
+  std::shared_ptr<ObservationTask> observation_;
+  std::shared_ptr<TrajectoryTrackingTask> tracking_;
+  std::shared_ptr<PostureTask> posture_;
+  std::shared_ptr<EndEffectorPoseTask> pose_;
+  std::shared_ptr<JointAccelerationLimit> accel_limit_;
+  std::shared_ptr<JointPositionLimit> position_limit_;
+  std::shared_ptr<JointVelocityLimit> velocity_limit_;
+  std::shared_ptr<JointTorqueLimit> torque_limit_;
+
+  ObservedObjectIntegrator integrator_;
+  bool has_observation_ = false;
+  double time_ = 0.0;
+
+  Eigen::VectorXd x_;                  // kNumVars
+  Eigen::MatrixXd obs_A_;              // 6 x kNumVars scratch (fallback observation law)
+  Eigen::VectorXd obs_b_;              // 6
+  Vector7 qdd_ = Vector7::Zero();
+  Vector7 tau_ = Vector7::Zero();
+  QpStatus status_ = QpStatus::kOptimal;
+  int iterations_ = 0;
+  bool fell_back_ = false;
+  long fallback_count_ = 0;
+  long fallback_streak_ = 0;
+};
+
+}  // namespace handover::control

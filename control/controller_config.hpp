@@ -1,0 +1,76 @@
+// Controller settings (config/controller.yaml) and their strict loader.
+// Start-up only (allocates, throws); nothing here runs in the control step.
+// Units: stiffness 1/s^2, damping 1/s, weights unitless, scales fractions of
+// the datasheet limits, period s.
+#pragma once
+
+#include <string>
+
+#include "config/yaml_reader.hpp"
+#include "control/constraints/joint_position_limit.hpp"
+#include "control/tasks/pd_gains.hpp"
+#include "control/types.hpp"
+
+namespace handover::control {
+
+/// Gains of one part (translation or orientation) of a Cartesian task, with
+/// its per-axis row weights (world axes).
+struct AxisGains {
+  PdGains gains;
+  Vector3 weights = Vector3::Ones();
+};
+
+struct ControllerConfig {
+  double period = 0.001;  ///< control period dt, s
+  std::string frame = "tcp";  ///< model frame that grasps
+
+  struct Observation {
+    PdGains gains = PdGains::critical(1500.0);
+    double weight = 1e5;
+  } observation;
+
+  struct Tracking {
+    double weight = 1000.0;
+    AxisGains translation{PdGains::critical(1.0)};
+    AxisGains orientation{PdGains::critical(2.0)};
+  } tracking;
+
+  struct Posture {
+    PdGains gains = PdGains::critical(10.0);
+    double weight = 5.0;
+    Vector7 target = (Vector7() << 0.0, -0.785398, 0.0, -2.356194, 0.0, 1.570796, 0.785398).finished();
+  } posture;
+
+  struct PoseTask {
+    double weight = 1000.0;
+    AxisGains translation{PdGains::critical(2.0)};
+    AxisGains orientation{PdGains::critical(2.0)};
+  } pose_task;
+
+  struct Limits {
+    JointPositionLimitParams position;
+    double velocity_scale = 0.5;
+    double acceleration_scale = 1.0;
+    double torque_scale = 1.0;
+  } limits;
+
+  struct Qp {
+    double regularisation = 1e-6;
+    int max_iterations = 1000;
+  } qp;
+
+  struct Fallback {
+    double damping = 20.0;  ///< kd of the damped stop qddot = -kd qdot, 1/s
+  } fallback;
+};
+
+/// Reads a controller config. Every section and key is optional (defaults
+/// above); unknown keys, wrong types and out-of-range values throw
+/// InputError naming the file, the dotted key and the line.
+ControllerConfig loadControllerConfig(const std::string& path);
+/// Same, from an already parsed document (e.g. after scenario overrides).
+ControllerConfig parseControllerConfig(const YamlReader& root);
+/// The default file: HANDOVER_SOURCE_DIR/config/controller.yaml.
+std::string defaultControllerConfigPath();
+
+}  // namespace handover::control

@@ -1,0 +1,43 @@
+// The grasp frame rigidly attached to the observed object (paper eqs. forward
+// position / velocity / acceleration), and the "nearest grasp" rule for
+// objects that are symmetric about an axis. Real-time safe.
+//
+// Frames: X_grasp^obs is the grasp frame in the observed object's frame; all
+// outputs are world axes, spatial vectors [linear; angular].
+#pragma once
+
+#include "control/formulation/control_context.hpp"
+
+namespace handover::control {
+
+/// Where the gripper grasps the object, in the object's frame.
+struct GraspOffset {
+  Isometry placement = Isometry::Identity();  ///< X_grasp^obs
+  /// When true, the object is symmetric about `free_axis` (unit, object
+  /// frame): any rotation of the grasp about that axis (through the object
+  /// origin) is as good, and the one nearest to the gripper is used.
+  bool has_free_axis = false;
+  Vector3 free_axis = Vector3::UnitZ();
+};
+
+struct GraspFrameState {
+  Isometry pose = Isometry::Identity();    ///< X_grasp in the world
+  Vector6 velocity = Vector6::Zero();      ///< [Pdot_grasp; omega_obs]
+  Vector6 acceleration = Vector6::Zero();  ///< [Pddot_grasp; omegadot_obs]
+  Vector3 lever = Vector3::Zero();         ///< r = P_grasp - P_obs, m, world axes
+};
+
+/// Rotation of the grasp frame in the world. Without a free axis: R_obs R_grasp^obs.
+/// With one: the member of {R_obs Rot(free_axis, phi) R_grasp^obs} closest to
+/// R_ee (the smallest rotation that carries R_ee's copy of the axis onto the
+/// object's axis, applied to R_ee).
+Matrix3 graspRotation(const ObservedState& obs, const GraspOffset& offset, const Matrix3& R_ee);
+
+/// Full state of the grasp frame given the observed object's state and its
+/// acceleration `alphadot_obs` (use obs.acceleration for the last solved one).
+/// R_ee picks the nearest grasp when the offset has a free axis (rotation about
+/// it is frozen for this evaluation).
+GraspFrameState graspFrameState(const ObservedState& obs, const Vector6& alphadot_obs, const GraspOffset& offset,
+                                const Matrix3& R_ee);
+
+}  // namespace handover::control

@@ -1,0 +1,14 @@
+#include "control/tasks/posture_task.hpp"
+
+namespace handover::control {
+
+PostureTask::PostureTask(std::string name, PdGains gains, const Vector7& q_ref)
+    : name_(std::move(name)), gains_(gains), q_ref_(q_ref) {}
+
+void PostureTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen::MatrixXd> A, Eigen::Ref<Eigen::VectorXd> b) {
+  const Data& data = *ctx.data;
+  A.block<kArmDofs, kArmDofs>(0, VariableLayout::kQdd).setIdentity();
+  b.head<kArmDofs>() = -gains_.stiffness * (data.q - q_ref_) - gains_.damping * data.v;
+}
+
+}  // namespace handover::control

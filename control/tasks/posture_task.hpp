@@ -1,0 +1,34 @@
+// Posture task (paper II-D): qddot = -Kp (q - q_ref) - Kd qdot.
+// Rows: 7, over the qddot block. Defaults stiffness 10, damping 2 sqrt(10)
+// (weight 5 is set in the Formulation by the controller). Real-time safe.
+#pragma once
+
+#include <string>
+
+#include "control/formulation/task.hpp"
+#include "control/tasks/pd_gains.hpp"
+
+namespace handover::control {
+
+class PostureTask : public Task {
+ public:
+  explicit PostureTask(std::string name = "posture", PdGains gains = PdGains::critical(10.0),
+                       const Vector7& q_ref = Vector7::Zero());
+
+  const std::string& name() const override { return name_; }
+  int rows() const override { return kArmDofs; }
+  void compute(const ControlContext& ctx, Eigen::Ref<Eigen::MatrixXd> A, Eigen::Ref<Eigen::VectorXd> b) override;
+
+  /// Reference posture, rad.
+  void setTarget(const Vector7& q_ref) { q_ref_ = q_ref; }
+  const Vector7& target() const { return q_ref_; }
+  void setGains(const PdGains& gains) { gains_ = gains; }
+  const PdGains& gains() const { return gains_; }
+
+ private:
+  std::string name_;
+  PdGains gains_;
+  Vector7 q_ref_;
+};
+
+}  // namespace handover::control

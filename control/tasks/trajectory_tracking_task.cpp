@@ -1,0 +1,69 @@
+#include "control/tasks/trajectory_tracking_task.hpp"
+
+#include "control/so3.hpp"
+
+namespace handover::control {
+
+TrajectoryTrackingTask::TrajectoryTrackingTask(const Model& model, std::string name, const std::string& frame,
+                                               PdGains translation, PdGains orientation)
+    : name_(std::move(name)), frame_id_(model.frameId(frame)), translation_(translation), orientation_(orientation) {}
+
+void TrajectoryTrackingTask::setGains(const PdGains& translation, const PdGains& orientation) {
+  translation_ = translation;
+  orientation_ = orientation;
+}
+
+void TrajectoryTrackingTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen::MatrixXd> A,
+                                     Eigen::Ref<Eigen::VectorXd> b) {
+  const Model& model = *ctx.model;
+  const Data& data = *ctx.data;
+  const ObservedState& obs = ctx.observed;
+
+  // end effector, computed once per cycle by computeAll
+  const Isometry X_ee = framePlacement(model, data, frame_id_);
+  frameJacobian(model, data, frame_id_, J_);
+  const Vector6 v_ee = J_ * data.v;
+  const Vector6 drift = frameDrift(model, data, frame_id_);
+  const Matrix3& R_ee = X_ee.linear();
+
+  // grasp frame with zero object acceleration: its acceleration is then the
+  // velocity-product term w x (w x r); the rest is in the alphadot_obs columns
+  const GraspFrameState g = graspFrameState(obs, Vector6::Zero(), offset_, R_ee);
+  const Vector3& r = g.lever;
+  const Vector3 w_obs = obs.velocity.tail<3>();
+  const Vector3 w_ee = v_ee.tail<3>();
+
+  // translation rows
+  error_.head<3>() = X_ee.translation() - g.pose.translation();
+  const Vector3 edot_p = v_ee.head<3>() - g.velocity.head<3>();
+  A.block<3, kArmDofs>(0, VariableLayout::kQdd) = J_.topRows<3>();
+  A.block<3, 3>(0, VariableLayout::kObs) = -Matrix3::Identity();
+  A.block<3, 3>(0, VariableLayout::kObs + 3) = skew(r);
+  b.head<3>() = -translation_.stiffness * error_.head<3>() - translation_.damping * edot_p - drift.head<3>() +
+                g.acceleration.head<3>();
+
+  // orientation rows
+  angle_error_ = logRotation(R_ee * g.pose.linear().transpose()).norm();
+  if (!offset_.has_free_axis) {
+    error_.tail<3>() = orientationError(R_ee, g.pose.linear());
+    A.block<3, kArmDofs>(3, VariableLayout::kQdd) = J_.bottomRows<3>();
+    A.block<3, 3>(3, VariableLayout::kObs + 3) = -Matrix3::Identity();
+    b.tail<3>() = -orientation_.stiffness * error_.tail<3>() - orientation_.damping * (w_ee - w_obs) -
+                  drift.tail<3>();
+    return;
+  }
+  const Vector3 u = offset_.placement.linear().transpose() * offset_.free_axis;
+  const Vector3 a = obs.pose.linear() * offset_.free_axis;
+  const Vector3 bv = R_ee * u;
+  const Vector3 c = bv - a;
+  const Vector3 cdot = w_ee.cross(bv) - w_obs.cross(a);
+  error_.tail<3>() = c;
+  const Matrix3 P = Matrix3::Identity() - bv * bv.transpose();
+  const Matrix3 Sb = skew(bv);
+  A.block<3, kArmDofs>(3, VariableLayout::kQdd) = -Sb * J_.bottomRows<3>();
+  A.block<3, 3>(3, VariableLayout::kObs + 3) = P * skew(a);
+  b.tail<3>() = P * (-orientation_.stiffness * c - orientation_.damping * cdot + Sb * drift.tail<3>() -
+                     w_ee.cross(w_ee.cross(bv)) + w_obs.cross(w_obs.cross(a)));
+}
+
+}  // namespace handover::control
