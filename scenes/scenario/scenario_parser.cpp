@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "config/yaml_reader.hpp"
@@ -234,6 +235,16 @@ void readExpect(const YamlReader& r, Expectations& e, double duration) {
   r.finish();
 }
 
+// sets a.b.c in `node` (the path exists: applyOverrides checked it)
+void setDotted(YAML::Node node, const std::string& dotted, const YAML::Node& value) {
+  const auto dot = dotted.find('.');
+  if (dot == std::string::npos) {
+    node[dotted] = YAML::Clone(value);
+    return;
+  }
+  setDotted(node[dotted.substr(0, dot)], dotted.substr(dot + 1), value);
+}
+
 std::string resolveConfig(const YamlReader& r, const std::string& scenario_file) {
   const std::string given = r.asString();
   if (given.empty()) r.fail("empty path");
@@ -286,7 +297,16 @@ Scenario readScenario(const YamlReader& root) {
                 " does not exist)");
     }
     if (!set->isMap()) set->fail("expected a map of dotted config keys to values");
-    applyOverrides(s.config, *set, s.config_path);
+    // applyOverrides rebinds its walking handle, which rewrites the document
+    // it walks (yaml-cpp assignment semantics): check each key on a fresh
+    // clone and merge the values here
+    const YAML::Node pristine = YAML::Clone(s.config);
+    for (const std::string& key : set->keys()) {
+      YAML::Node one(YAML::NodeType::Map);
+      one[key] = set->node()[key];
+      applyOverrides(YAML::Clone(pristine), YamlReader(one, set->file(), set->path()), s.config_path);
+      setDotted(s.config, key, set->child(key).node());
+    }
     s.overrides = YAML::Clone(set->node());
   }
 

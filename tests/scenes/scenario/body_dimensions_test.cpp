@@ -1,0 +1,33 @@
+#include "scenes/scenario/body_dimensions.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace handover::scenario;
+
+TEST(BodyDimensions, MatchFactsFileSegmentsAt50thPercentile) {
+  // facts file: 1.759 m male has upper arm 0.361, forearm + hand 0.483
+  const BodyDimensions m = bodyDimensionsFromHeight(1.759);
+  EXPECT_NEAR(m.upper_arm, 0.361, 0.005);
+  EXPECT_NEAR(m.forearm + 0.108 * 1.759, 0.483, 0.015);
+  const BodyDimensions f = bodyDimensionsFromHeight(1.618);
+  EXPECT_NEAR(f.upper_arm, 0.332, 0.005);
+  EXPECT_NEAR(f.forearm + 0.108 * 1.618, 0.428, 0.015);
+  // a person reaches less than their height's half and more than a third
+  EXPECT_GT(m.reach(), 0.33 * 1.759);
+  EXPECT_LT(m.reach(), 0.5 * 1.759);
+}
+
+TEST(BodyDimensions, ShoulderSidesFollowFacing) {
+  const BodyDimensions b = bodyDimensionsFromHeight(1.75);
+  // facing the robot (yaw = pi): the right shoulder is at +y
+  const Eigen::Vector3d r = shoulderPosition(b, {1.0, 0.0}, M_PI, HandSide::Right);
+  const Eigen::Vector3d l = shoulderPosition(b, {1.0, 0.0}, M_PI, HandSide::Left);
+  EXPECT_GT(r.y(), 0.1);
+  EXPECT_LT(l.y(), -0.1);
+  EXPECT_NEAR(r.x(), 1.0, 1e-9);
+  EXPECT_NEAR(r.z(), kFloorZ + b.shoulder_height, 1e-12);
+  // facing +x (yaw = 0): the right shoulder is at -y
+  EXPECT_LT(shoulderPosition(b, {0, 0}, 0.0, HandSide::Right).y(), -0.1);
+}
