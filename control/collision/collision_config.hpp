@@ -1,0 +1,77 @@
+// Collision settings read from config/collision.yaml (strict: every key is
+// checked; errors name file, dotted key and line). Start-up only, not
+// real-time safe.
+//
+// Bodies a pair rule can name:
+//   robot capsules, matched by their URDF link ("panda_link5") or capsule
+//   name; "*" and "?" are wildcards ("panda_link5*", "panda_*finger");
+//   "table" (a box whose top is the plane z = 0);
+//   "human_hand" (a box in the hand frame), "human_forearm",
+//   "human_upper_arm" (capsules along the segment's z axis).
+// A list item that is the name of a group expands to that group's patterns.
+// Units: m, m/s.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "control/types.hpp"
+
+namespace handover::control {
+
+/// Damping of the velocity damper. Automatic (mc_rtc): on entering iDist
+/// with d_dot < 0, xi = -d_dot (iDist - sDist) / (d - sDist) + offset.
+struct DamperSettings {
+  double i_dist = 0.05;           ///< m, interaction distance: the damper acts below it
+  double s_dist = 0.01;           ///< m, safety distance: d never goes below it
+  bool automatic = true;          ///< automatic damping (default)
+  double damping = 0.0;           ///< m/s, fixed xi when !automatic
+  double damping_offset = 0.1;    ///< m/s, added to the automatic xi
+};
+
+/// One rule of the `pairs:` list: every robot capsule matched by `robot`
+/// against every body matched by `other`. All the capsule pairs it yields
+/// share its name (switched on and off together at run time).
+struct PairRule {
+  std::string name;
+  std::vector<std::string> robot;   ///< patterns / group names (already expanded)
+  std::vector<std::string> other;   ///< patterns / group names (already expanded)
+  DamperSettings damper;
+  double margin = 0.0;              ///< m, extra clearance around the other body
+  bool enabled = true;              ///< state at start-up
+  int line = 0;                     ///< line in the file, for messages
+};
+
+struct TableSettings {
+  Vector3 size = Vector3(1.2, 1.6, 0.05);   ///< full edges, m; top face at z = 0
+  Vector3 center_xy = Vector3(0.3, 0.0, 0.0);  ///< x, y of the box centre, m (z unused)
+};
+
+struct PersonSettings {
+  Vector3 hand_size = Vector3(0.10, 0.09, 0.05);  ///< full edges of the hand box, m
+  Isometry hand_offset = Isometry::Identity();     ///< box centre in the hand (grip point) frame
+  double forearm_radius = 0.045;    ///< m
+  double upper_arm_radius = 0.055;  ///< m
+  double margin = 0.03;             ///< m, default extra clearance for sensor noise
+};
+
+struct CollisionConfig {
+  std::string file;                 ///< where it was read from (messages)
+  double broadphase_margin = 0.05;  ///< m, pairs farther than iDist + this are skipped
+  DamperSettings defaults;
+  TableSettings table;
+  PersonSettings person;
+  std::vector<PairRule> pairs;
+};
+
+/// Reads a collision config file. Throws InputError naming file/key/line.
+CollisionConfig loadCollisionConfig(const std::string& path);
+/// Same from YAML text; `origin` names the source in messages.
+CollisionConfig parseCollisionConfig(const std::string& text, const std::string& origin);
+/// The repository's config/collision.yaml.
+std::string defaultCollisionConfigPath();
+
+/// Glob match with '*' (any run) and '?' (one character).
+bool globMatch(const std::string& pattern, const std::string& name);
+
+}  // namespace handover::control

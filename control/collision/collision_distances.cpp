@@ -1,0 +1,185 @@
+#include "control/collision/collision_distances.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "config/input_error.hpp"
+#include "control/model/algorithms.hpp"
+
+namespace handover::control {
+
+namespace {
+
+// twist of a frame re-expressed at another origin (same rigid motion)
+Vector6 shiftTwist(const Vector6& twist, const Vector3& from, const Vector3& to) {
+  Vector6 t = twist;
+  t.head<3>() += twist.tail<3>().cross(to - from);
+  return t;
+}
+
+// distance from a point to a box (canonical pose X, full edges size); 0 inside
+double pointBoxDistance(const Vector3& p, const Isometry& X, const Vector3& size) {
+  const Vector3 q = X.inverse(Eigen::Isometry) * p;
+  const Vector3 excess = (q.cwiseAbs() - 0.5 * size).cwiseMax(0.0);
+  return excess.norm();
+}
+
+// true when p lies on exactly one face of the box (not an edge or corner):
+// then the contact normal is the face normal and turns with the box
+bool onBoxFace(const Vector3& p, const Isometry& X, const Vector3& size) {
+  const Vector3 q = X.inverse(Eigen::Isometry) * p;
+  int on = 0;
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(std::abs(q[k]) - 0.5 * size[k]) < 1e-7) ++on;
+  return on == 1;
+}
+
+void updatePoses(const CollisionModel& cm, CollisionData& cd, const Data& data, const CollisionEnvironment& env) {
+  for (std::size_t i = 0; i < cm.bodies.size(); ++i) {
+    const CollisionBody& b = cm.bodies[i];
+    if (b.isRobot()) cd.body_pose[i] = data.oMb[b.body] * b.local;
+  }
+  cd.body_pose[cm.table] = cm.bodies[cm.table].local;
+  cd.body_twist[cm.table].setZero();
+
+  cd.body_pose[cm.human_hand] = env.hand * cm.bodies[cm.human_hand].local;
+  cd.body_twist[cm.human_hand] =
+      shiftTwist(env.hand_velocity, env.hand.translation(), cd.body_pose[cm.human_hand].translation());
+
+  auto segment = [&](int idx, const Isometry& X, double length, const Vector6& twist) {
+    const double L = std::max(length, 0.0);
+    if (cd.shapes.segmentLength(idx) != L) cd.shapes.setSegmentLength(idx, L);
+    Isometry C = X;
+    C.translation() = X * Vector3(0.0, 0.0, 0.5 * L);
+    cd.body_pose[idx] = C;
+    cd.body_twist[idx] = shiftTwist(twist, X.translation(), C.translation());
+  };
+  segment(cm.human_forearm, env.forearm, env.forearm_length, env.forearm_velocity);
+  segment(cm.human_upper_arm, env.upper_arm, env.upper_arm_length, env.upper_arm_velocity);
+}
+
+// lower bound of the core-to-core distance from bounding spheres
+double coreLowerBound(const CollisionData& cd, const CollisionBody& a, int ia, const CollisionBody& o, int io) {
+  const Vector3& ca = cd.body_pose[ia].translation();
+  const double ra = 0.5 * cd.shapes.segmentLength(ia);
+  if (o.shape.kind == ShapeSpec::Kind::kBox) return pointBoxDistance(ca, cd.body_pose[io], o.shape.size) - ra;
+  (void)a;
+  return (ca - cd.body_pose[io].translation()).norm() - ra - 0.5 * cd.shapes.segmentLength(io);
+}
+
+}  // namespace
+
+void updateCollisions(const CollisionModel& cm, CollisionData& cd, const Model& model, const Data& data,
+                      const CollisionEnvironment& env) {
+  updatePoses(cm, cd, data, env);
+  cd.num_active = 0;
+  cd.num_narrow = 0;
+  const Vector7& qdot = data.v;
+  Matrix3x7 J1, J2;
+  ShapeDistanceResult sd;
+
+  for (int k = 0; k < cm.numPairs(); ++k) {
+    const CollisionPair& pair = cm.pairs[k];
+    PairResult& res = cd.results[k];
+    res.active = false;
+    if (!cd.rule_enabled[pair.rule]) continue;
+    const int ia = pair.robot_body, io = pair.other_body;
+    const CollisionBody& a = cm.bodies[ia];
+    const CollisionBody& o = cm.bodies[io];
+    if (o.isPerson() && !env.person_valid) continue;
+
+    // broad phase: skip pairs that cannot come within reach of the damper
+    const double radii = a.radius + o.radius + pair.margin;
+    const double lower = coreLowerBound(cd, a, ia, o, io) - radii;
+    if (lower > pair.damper.i_dist + cm.broadphase_margin) continue;
+
+    // narrow phase on the cores
+    ++cd.num_narrow;
+    cd.shapes.compute(ia, cd.body_pose[ia], io, cd.body_pose[io], sd);
+    Vector3 c1 = sd.p1, c2 = sd.p2;
+    double D = sd.distance;
+    Vector3 n;
+    res.penetrating = !(sd.separated && D > 1e-9);
+    if (!res.penetrating) {
+      n = (c1 - c2) / D;
+    } else {
+      if (!sd.separated && o.shape.kind == ShapeSpec::Kind::kBox) {
+        // GJK gives no points inside a box: use the segment's centre
+        c1 = c2 = cd.body_pose[ia].translation();
+      }
+      D = 0.0;
+      if (cd.has_last_normal[k]) {
+        n = cd.last_normal[k];
+      } else {
+        const Vector3 away = cd.body_pose[ia].translation() - cd.body_pose[io].translation();
+        n = away.norm() > 1e-9 ? Vector3(away.normalized()) : Vector3::UnitZ();
+      }
+    }
+    cd.last_normal[k] = n;
+    cd.has_last_normal[k] = true;
+
+    res.active = true;
+    ++cd.num_active;
+    res.core_distance = D;
+    res.distance = D - radii;
+    res.c_robot = c1;
+    res.c_other = c2;
+    res.normal = n;
+    res.p_robot = c1 - a.radius * n;
+    res.p_other = c2 + o.radius * n;
+
+    // velocities and accelerations (at qddot = 0) of the two core points
+    pointJacobian(model, data, a.body, c1, J1);
+    Vector3 v1 = J1 * qdot;
+    Vector3 acc1 = pointDrift(model, data, a.body, c1);
+    Vector3 v2, acc2, omega2;
+    if (o.isRobot()) {
+      pointJacobian(model, data, o.body, c2, J2);
+      v2 = J2 * qdot;
+      acc2 = pointDrift(model, data, o.body, c2);
+      omega2 = data.body_velocity[o.body].tail<3>();
+      res.jacobian.noalias() = n.transpose() * (J1 - J2);
+    } else {
+      const Vector6& tw = cd.body_twist[io];
+      omega2 = tw.tail<3>();
+      v2 = tw.head<3>() + omega2.cross(c2 - cd.body_pose[io].translation());
+      acc2.setZero();  // the person's acceleration is not known
+      res.jacobian.noalias() = n.transpose() * J1;
+    }
+    const Vector3 dv = v1 - v2;
+    res.d_dot = n.dot(dv);
+
+    // normal rotation: face contact turns with the box, else point-to-point
+    Vector3 ndot = Vector3::Zero();
+    if (o.shape.kind == ShapeSpec::Kind::kBox && !res.penetrating && onBoxFace(c2, cd.body_pose[io], o.shape.size)) {
+      ndot = omega2.cross(n);
+    } else if (D > 1e-9) {
+      ndot = (dv - n * n.dot(dv)) / D;
+    }
+    res.drift = n.dot(acc1 - acc2) + ndot.dot(dv);
+  }
+}
+
+void setRuleEnabled(CollisionData& cd, int rule, bool enabled) {
+  if (rule >= 0 && rule < static_cast<int>(cd.rule_enabled.size())) cd.rule_enabled[rule] = enabled;
+}
+
+void setRuleEnabled(const CollisionModel& cm, CollisionData& cd, const std::string& rule, bool enabled) {
+  const int idx = cm.ruleIndex(rule);
+  if (idx < 0) {
+    std::string known;
+    for (const auto& n : cm.rule_names) known += (known.empty() ? "" : ", ") + n;
+    throw InputError("collision pair rule '" + rule + "' does not exist (known: " + known + ")");
+  }
+  setRuleEnabled(cd, idx, enabled);
+}
+
+double minPersonDistance(const CollisionModel& cm, const CollisionData& cd) {
+  double m = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < cm.numPairs(); ++k) {
+    if (cd.results[k].active && cm.bodies[cm.pairs[k].other_body].isPerson()) m = std::min(m, cd.results[k].distance);
+  }
+  return m;
+}
+
+}  // namespace handover::control

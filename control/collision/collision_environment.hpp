@@ -1,0 +1,26 @@
+// What the collision scene needs to know each cycle about the world outside
+// the robot: the person's arm segments as world poses (from perception).
+// A plain fixed-size struct: copying it is real-time safe.
+#pragma once
+
+#include "control/types.hpp"
+
+namespace handover::control {
+
+struct CollisionEnvironment {
+  /// false: no trustworthy person estimate; pairs with the person give no rows.
+  bool person_valid = false;
+  Isometry hand = Isometry::Identity();       ///< grip point frame in the world (design notes 1)
+  Isometry forearm = Isometry::Identity();    ///< origin at the elbow, z along elbow -> wrist
+  Isometry upper_arm = Isometry::Identity();  ///< origin at the shoulder, z along shoulder -> elbow
+  double forearm_length = 0.27;               ///< m, elbow to wrist
+  double upper_arm_length = 0.33;             ///< m, shoulder to elbow
+  /// Optional twists [v of the frame origin; omega], world axes, m/s and rad/s.
+  /// They enter d_dot (a person moving toward the robot shrinks the distance);
+  /// the person's acceleration is taken as zero.
+  Vector6 hand_velocity = Vector6::Zero();
+  Vector6 forearm_velocity = Vector6::Zero();
+  Vector6 upper_arm_velocity = Vector6::Zero();
+};
+
+}  // namespace handover::control

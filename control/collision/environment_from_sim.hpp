@@ -1,0 +1,22 @@
+// Converts the simulator's/perception's person poses (sim::HumanBodyPoses)
+// into a CollisionEnvironment. Real-time safe. Velocities stay zero: the
+// poses carry none; a caller with estimates can fill them in afterwards.
+#pragma once
+
+#include "control/collision/collision_environment.hpp"
+#include "scenes/sim/sim_io.hpp"
+
+namespace handover::control {
+
+inline CollisionEnvironment environmentFromHuman(const sim::HumanBodyPoses& person, bool valid = true) {
+  CollisionEnvironment env;
+  env.person_valid = valid;
+  env.hand = person.hand;
+  env.forearm = person.forearm;
+  env.upper_arm = person.upper_arm;
+  env.forearm_length = person.forearm_length;
+  env.upper_arm_length = person.upper_arm_length;
+  return env;
+}
+
+}  // namespace handover::control

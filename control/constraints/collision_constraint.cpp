@@ -1,0 +1,64 @@
+#include "control/constraints/collision_constraint.hpp"
+
+#include <limits>
+
+namespace handover::control {
+
+double damperLowerBound(double d, double d_dot, double drift, double xi, const DamperSettings& s, double dt) {
+  const double bound = -xi * (d - s.s_dist) / (s.i_dist - s.s_dist);
+  return (bound - d_dot) / dt - drift;
+}
+
+CollisionConstraint::CollisionConstraint(const Model& model, const CollisionConfig& config, std::string name)
+    : name_(std::move(name)),
+      cmodel_(buildCollisionModel(model, config)),
+      cdata_(cmodel_),
+      dampers_(cmodel_.pairs.size()) {}
+
+void CollisionConstraint::setRuleEnabled(int rule, bool enabled) {
+  control::setRuleEnabled(cdata_, rule, enabled);
+  for (int k = 0; k < cmodel_.numPairs(); ++k)
+    if (cmodel_.pairs[k].rule == rule) dampers_[k] = DamperState{};
+}
+
+void CollisionConstraint::setRuleEnabled(const std::string& rule, bool enabled) {
+  control::setRuleEnabled(cmodel_, cdata_, rule, enabled);  // throws on unknown names
+  setRuleEnabled(cmodel_.ruleIndex(rule), enabled);
+}
+
+int CollisionConstraint::compute(const ControlContext& ctx, Eigen::Ref<Eigen::MatrixXd> C,
+                                 Eigen::Ref<Eigen::VectorXd> lb, Eigen::Ref<Eigen::VectorXd> ub,
+                                 Eigen::Ref<Eigen::VectorXd> /*chi_lb*/, Eigen::Ref<Eigen::VectorXd> /*chi_ub*/) {
+  updateCollisions(cmodel_, cdata_, *ctx.model, *ctx.data, env_);
+  const double inf = std::numeric_limits<double>::infinity();
+  int rows = 0;
+  for (int k = 0; k < cmodel_.numPairs(); ++k) {
+    const PairResult& r = cdata_.results[k];
+    const DamperSettings& s = cmodel_.pairs[k].damper;
+    DamperState& st = dampers_[k];
+    if (!r.active || r.distance >= s.i_dist) {
+      st = DamperState{};
+      continue;
+    }
+    if (!st.inside) {
+      // entering: automatic damping accepts the current approach speed
+      st.inside = true;
+      if (s.automatic) {
+        st.xi = s.damping_offset;
+        if (r.d_dot < 0.0 && r.distance > s.s_dist)
+          st.xi += -r.d_dot * (s.i_dist - s.s_dist) / (r.distance - s.s_dist);
+      }
+    }
+    if (!s.automatic) st.xi = s.damping;
+    st.bound = -st.xi * (r.distance - s.s_dist) / (s.i_dist - s.s_dist);
+
+    C.row(rows).setZero();
+    C.row(rows).segment<kArmDofs>(VariableLayout::kQdd) = r.jacobian;
+    lb[rows] = damperLowerBound(r.distance, r.d_dot, r.drift, st.xi, s, ctx.dt);
+    ub[rows] = inf;
+    ++rows;
+  }
+  return rows;
+}
+
+}  // namespace handover::control

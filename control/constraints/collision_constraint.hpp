@@ -1,0 +1,76 @@
+// Collision avoidance as velocity dampers at the acceleration level
+// (mc_rtc style), one row per active pair over chi = [qddot (7); obs (6)].
+//
+// For a pair with distance d < iDist (d, d_dot, Jd, drift from
+// updateCollisions), the row asks that after one control period
+//   d_dot + dt * d_ddot >= -xi (d - sDist) / (iDist - sDist),
+// with d_ddot = Jd qddot + drift, i.e.
+//   Jd qddot >= (-xi (d - sDist) / (iDist - sDist) - d_dot) / dt - drift.
+// The bound reaches 0 at d = sDist, so d never falls below sDist.
+// Automatic damping (default): when a pair enters iDist, xi is chosen so the
+// current d_dot is admissible, plus an offset; it stays until the pair leaves.
+// Pairs with d >= iDist give no row.
+//
+// Build: compiled into handover_collision (control/collision/CMakeLists.txt).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "control/collision/collision_config.hpp"
+#include "control/collision/collision_data.hpp"
+#include "control/collision/collision_distances.hpp"
+#include "control/collision/collision_environment.hpp"
+#include "control/collision/collision_model.hpp"
+#include "control/formulation/constraint.hpp"
+
+namespace handover::control {
+
+/// Damper state of one pair (for logs and tests).
+struct DamperState {
+  bool inside = false;   ///< d < iDist at the last compute()
+  double xi = 0.0;       ///< m/s, damping in use
+  double bound = 0.0;    ///< m/s, lower bound on d_dot at the next step
+};
+
+class CollisionConstraint : public Constraint {
+ public:
+  /// Builds the collision scene (allocates; start-up). Throws InputError on a
+  /// config that does not fit the model.
+  CollisionConstraint(const Model& model, const CollisionConfig& config, std::string name = "collision");
+
+  const std::string& name() const override { return name_; }
+  int maxRows() const override { return cmodel_.numPairs(); }
+
+  /// The person for the next compute(). Real-time safe (plain copy).
+  void setEnvironment(const CollisionEnvironment& env) { env_ = env; }
+
+  /// Updates all distances (updateCollisions) and writes one row per pair
+  /// closer than its iDist. Real-time safe.
+  int compute(const ControlContext& ctx, Eigen::Ref<Eigen::MatrixXd> C, Eigen::Ref<Eigen::VectorXd> lb,
+              Eigen::Ref<Eigen::VectorXd> ub, Eigen::Ref<Eigen::VectorXd> chi_lb,
+              Eigen::Ref<Eigen::VectorXd> chi_ub) override;
+
+  /// Run-time switch of a pair rule by name (throws InputError if unknown;
+  /// not real-time safe) or by index (real-time safe). Resets the dampers.
+  void setRuleEnabled(const std::string& rule, bool enabled);
+  void setRuleEnabled(int rule, bool enabled);
+  bool ruleEnabled(int rule) const { return cdata_.rule_enabled[rule]; }
+
+  const CollisionModel& collisionModel() const { return cmodel_; }
+  const CollisionData& collisionData() const { return cdata_; }
+  const std::vector<DamperState>& damperStates() const { return dampers_; }
+
+ private:
+  std::string name_;
+  CollisionModel cmodel_;
+  CollisionData cdata_;
+  CollisionEnvironment env_;
+  std::vector<DamperState> dampers_;
+};
+
+/// The bound of one damper row in chi space, for a pair with distance d,
+/// rate d_dot and drift: lb on Jd qddot. Exposed for tests. Real-time safe.
+double damperLowerBound(double d, double d_dot, double drift, double xi, const DamperSettings& s, double dt);
+
+}  // namespace handover::control
