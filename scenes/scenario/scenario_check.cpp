@@ -56,7 +56,8 @@ void checkScenario(const Scenario& s) {
 
   // walk the script, tracking the hand position and whether it holds the object
   Eigen::Vector3d hand = h.start.translation();
-  bool holding = h.holds_object.has_value();
+  // a grasp may miss at run time, so after one the hand only "maybe" holds
+  enum class Held { Yes, No, Maybe } held = h.holds_object ? Held::Yes : Held::No;
   for (const ScriptStep& st : h.script) {
     switch (st.kind) {
       case StepKind::Reach:
@@ -69,12 +70,12 @@ void checkScenario(const Scenario& s) {
         checkReach(s, shoulder, body, hand, st.target_where, "pull end");
         break;
       case StepKind::Release:
-        if (!holding) failAt(st.where, "release: the hand holds nothing at this point of the script");
-        holding = false;
+        if (held == Held::No) failAt(st.where, "release: the hand holds nothing at this point of the script");
+        held = Held::No;
         break;
       case StepKind::Grasp:
-        if (holding) failAt(st.where, "grasp: the hand already holds the object at this point of the script");
-        holding = true;  // if it succeeds; a missed grasp leaves the hand empty at run time
+        if (held == Held::Yes) failAt(st.where, "grasp: the hand already holds the object at this point of the script");
+        held = Held::Maybe;
         break;
       case StepKind::Hold:
       case StepKind::Wait:

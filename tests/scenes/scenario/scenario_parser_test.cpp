@@ -203,6 +203,10 @@ TEST_F(ScenarioFiles, ScriptSequenceMustMakeSense) {
               "human.script[4].release", "# again", "holds nothing");
 }
 
+TEST_F(ScenarioFiles, GraspWhileHoldingIsRejected) {
+  expectError(mutate("    - release: {}", "    - grasp: {}"), "human.script[2].grasp", "- grasp: {}", "already holds");
+}
+
 TEST_F(ScenarioFiles, ConfigPathMustExist) {
   expectError(mutate("seed: 3", "seed: 3\nconfig: no/such/controller.yaml"), "config", "config:", "not found");
 }

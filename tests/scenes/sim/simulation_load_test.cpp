@@ -1,0 +1,127 @@
+// Loading: the default scene has the contract names and a 1 ms step; missing
+// or broken MJCF files are InputErrors that name the file.
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <mujoco/mujoco.h>
+
+#include "config/input_error.hpp"
+#include "scenes/sim/simulation.hpp"
+#include "sim_test_support.hpp"
+
+namespace handover::sim {
+namespace {
+
+std::string loadError(const std::string& path) {
+  SimOptions o;
+  o.scene_path = path;
+  Simulation sim;
+  try {
+    sim.load(o);
+  } catch (const InputError& e) {
+    EXPECT_FALSE(sim.loaded());
+    return e.what();
+  }
+  return "";
+}
+
+// scene copies in the temp folder need panda.xml beside them (the include)
+void copyPandaToTempDir() {
+  const std::string dir = defaultScenePath().substr(0, defaultScenePath().rfind('/'));
+  std::ifstream p(dir + "/panda.xml");
+  std::ofstream out(::testing::TempDir() + "panda.xml");
+  out << p.rdbuf();
+}
+
+TEST(SimulationLoad, DefaultSceneHasContractNamesAndOneMillisecondStep) {
+  Simulation sim;
+  sim.load();
+  ASSERT_TRUE(sim.loaded());
+  EXPECT_DOUBLE_EQ(sim.timestep(), 0.001);
+  const mjModel* m = sim.mujocoModel();
+  for (const char* body : {"panda_link0", "panda_hand", "human_hand", "human_forearm", "human_upper_arm",
+                           "human_torso", "object"}) {
+    EXPECT_GE(mj_name2id(m, mjOBJ_BODY, body), 0) << body;
+  }
+  EXPECT_GE(mj_name2id(m, mjOBJ_CAMERA, "overview"), 0);
+  EXPECT_GE(mj_name2id(m, mjOBJ_EQUALITY, "object_weld"), 0);
+  EXPECT_FALSE(sim.objectWelded());
+  // load() leaves the arm in the ready posture at rest
+  const ArmState s = sim.armState();
+  EXPECT_LT((s.q - test::readyPosture()).norm(), 1e-12);
+  EXPECT_NEAR(s.finger_width, 0.08, 1e-12);
+  EXPECT_EQ(sim.time(), 0.0);
+}
+
+TEST(SimulationLoad, MissingFileIsAnInputErrorNamingIt) {
+  const std::string msg = loadError("/nonexistent/dir/scene.xml");
+  EXPECT_NE(msg.find("/nonexistent/dir/scene.xml"), std::string::npos) << msg;
+}
+
+TEST(SimulationLoad, BrokenFileIsAnInputErrorNamingItWithMujocosText) {
+  const std::string path = ::testing::TempDir() + "handover_broken_scene.xml";
+  {
+    std::ofstream out(path);
+    out << "<mujoco><worldbody><body name=\"object\"><geom name=\"object_geom\" size=\"0.1\"/>\n<oops</worldbody>";
+  }
+  std::string msg = loadError(path);
+  EXPECT_NE(msg.find(path), std::string::npos) << msg;
+  EXPECT_NE(msg.find("XML"), std::string::npos) << "MuJoCo's own error text: " << msg;
+
+  // the real scene with one bad attribute value: every named element is there
+  copyPandaToTempDir();
+  std::ifstream in(defaultScenePath());
+  std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string good = "timestep=\"0.001\"";
+  ASSERT_NE(xml.find(good), std::string::npos);
+  xml.replace(xml.find(good), good.size(), "timestep=\"fast\"");
+  {
+    std::ofstream out(path);
+    out << xml;
+  }
+  msg = loadError(path);
+  std::remove(path.c_str());
+  EXPECT_NE(msg.find(path), std::string::npos) << msg;
+  EXPECT_NE(msg.find("MuJoCo"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("XML"), std::string::npos) << "MuJoCo's own error text: " << msg;
+}
+
+TEST(SimulationLoad, ValidXmlWithoutTheContractNamesIsAnInputError) {
+  // a copy of the real scene whose weld grips with the torso instead of the hand
+  std::ifstream in(defaultScenePath());
+  std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string weld = "body1=\"human_hand\"";
+  xml.replace(xml.find(weld), weld.size(), "body1=\"human_torso\"");
+  // the copy lives in a temp folder, with a copy of panda.xml beside it
+  const std::string inc = "<include file=\"panda.xml\"/>";
+  const std::string dir = defaultScenePath().substr(0, defaultScenePath().rfind('/'));
+  const std::string tmp_dir = ::testing::TempDir();
+  {
+    std::ifstream p(dir + "/panda.xml");
+    std::ofstream out(tmp_dir + "panda.xml");
+    out << p.rdbuf();
+  }
+  const std::string path = tmp_dir + "handover_scene_without_grip.xml";
+  {
+    std::ofstream out(path);
+    out << xml;
+  }
+  ASSERT_NE(xml.find(inc), std::string::npos);
+  const std::string msg = loadError(path);
+  std::remove(path.c_str());
+  EXPECT_NE(msg.find(path), std::string::npos) << msg;
+  EXPECT_NE(msg.find("object_weld"), std::string::npos) << msg;
+}
+
+TEST(SimulationLoad, ResetRejectsNonFiniteInput) {
+  Simulation sim;
+  sim.load();
+  test::Vector7 q = test::readyPosture();
+  q[2] = std::nan("");
+  EXPECT_THROW(sim.reset(q, 0.08), InputError);
+}
+
+}  // namespace
+}  // namespace handover::sim
