@@ -154,7 +154,8 @@ bool GoldfarbIdnaniSolver::factorize() {
   // unconstrained minimum x0 = -H^-1 g = -J0 J0' g
   auto J0 = J0_.topLeftCorner(n, n);
   tmp_.head(n).noalias() = J0.transpose() * p_->g;
-  x0_.head(n).noalias() = -(J0 * tmp_.head(n));
+  x0_.head(n).noalias() = J0 * tmp_.head(n);  // (a negated product would need a temporary)
+  x0_.head(n) = -x0_.head(n);
   return true;
 }
 
