@@ -27,15 +27,16 @@ ViewerWindow* self(GLFWwindow* w) { return static_cast<ViewerWindow*>(glfwGetWin
 
 constexpr const char* kHelpKeys =
     "Left drag\nRight drag\nScroll\nShift\nDouble-click\nCtrl+Right drag\nCtrl+Left drag\n"
-    "Backspace\nEsc\nSpace\nTab\nF1";
+    "Backspace\nEsc\nSpace\n[  ]\nTab\nF1";
 constexpr const char* kHelpActions =
     "orbit\npan\nzoom\nhorizontal plane\nselect body (right: look at)\nmove selected body\n"
-    "rotate selected body\nhand back to script\ndeselect\npause\nnext camera\nhelp on/off";
+    "rotate selected body\nhand back to script\ndeselect\npause\nslower / faster\nnext camera\nhelp on/off";
 
 }  // namespace
 
 ViewerWindow::ViewerWindow(const mjModel* m, const ViewerOptions& options)
     : options_(options), show_help_(options.help) {
+  setSpeed(options.speed);
   if (m == nullptr) throw std::invalid_argument("ViewerWindow: null model");
   camera_ = cameraByName(m, options.camera);  // InputError before opening anything
   nbody_ = m->nbody;
@@ -131,7 +132,7 @@ bool ViewerWindow::frame(const mjModel* m, mjData* d, const std::string& state) 
       wall_anchor_ = now;
       sim_anchor_ = d->time;
     }
-    const double ahead = (d->time - sim_anchor_) - std::chrono::duration<double>(now - wall_anchor_).count();
+    const double ahead = (d->time - sim_anchor_) / speed_ - std::chrono::duration<double>(now - wall_anchor_).count();
     if (ahead > 0.002) {
       std::this_thread::sleep_for(std::chrono::duration<double>(std::min(ahead, 0.5)));
     } else if (ahead < -0.25) {
@@ -149,20 +150,29 @@ void ViewerWindow::draw(const mjModel* m, mjData* d, const std::string& state) {
   mjv_updateScene(m, d, &option_, &drag_.perturb(), &camera_, mjCAT_ALL, &scene_);
   mjr_render(viewport, &scene_, &context_);
 
+  char speed[32];
+  if (options_.realtime) std::snprintf(speed, sizeof speed, "%gx", speed_);
+  else std::snprintf(speed, sizeof speed, "max");
   char values[256];
   const int body = drag_.selected();
   const char* body_name = body > 0 ? mj_id2name(m, mjOBJ_BODY, body) : nullptr;
   const auto& held = drag_.held();
-  std::snprintf(values, sizeof values, "%.3f s\n%s\n%s%s\n%.0f", d->time,
+  std::snprintf(values, sizeof values, "%.3f s\n%s\n%s%s\n%s\n%.0f", d->time,
                 state.empty() ? "-" : state.c_str(),
                 body > 0 ? (body_name ? body_name : "(unnamed)") : "none",
                 held ? (held->dragging ? " (dragging)" : " (held, backspace: release)") : "",
-                fps_estimate_);
-  mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, "time\nstate\nselected\nfps", values, &context_);
+                speed, fps_estimate_);
+  mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, viewport, "time\nstate\nselected\nspeed\nfps", values,
+              &context_);
   if (paused_) mjr_overlay(mjFONT_BIG, mjGRID_TOPRIGHT, viewport, "PAUSED", nullptr, &context_);
   if (show_help_) mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, viewport, kHelpKeys, kHelpActions, &context_);
   glfwSwapBuffers(window_);
   glfwMakeContextCurrent(nullptr);
+}
+
+void ViewerWindow::setSpeed(double speed) {
+  speed_ = std::min(16.0, std::max(1.0 / 16.0, std::isfinite(speed) ? speed : 1.0));
+  have_anchor_ = false;  // pace from now on at the new speed
 }
 
 void ViewerWindow::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
@@ -261,6 +271,8 @@ void ViewerWindow::onKey(int key, int action, int mods) {
     case GLFW_KEY_ESCAPE: drag_.select(m_, d_, 0); break;
     case GLFW_KEY_F1: show_help_ = !show_help_; break;
     case GLFW_KEY_TAB: nextCamera(m_); break;
+    case GLFW_KEY_LEFT_BRACKET: setSpeed(speed_ / 2); break;
+    case GLFW_KEY_RIGHT_BRACKET: setSpeed(speed_ * 2); break;
     default: break;
   }
 }

@@ -22,6 +22,7 @@ struct ViewerOptions {
   std::string camera = "overview";     ///< start camera, see cameraByName()
   double max_fps = 60.0;               ///< frames drawn per wall-clock second at most
   bool realtime = true;                ///< frame() sleeps so simulated time does not outrun the wall clock
+  double speed = 1.0;                  ///< with realtime: simulated s per wall s ('[' / ']' halve / double it)
   bool fast = true;                    ///< shadows and reflections off (software GL under Xvfb)
   bool help = true;                    ///< show the mouse/key help at start (F1 toggles)
 };
@@ -31,7 +32,7 @@ struct ViewerOptions {
 ///   (shift: the horizontal plane); double-click: select a body;
 ///   ctrl + right drag: move the selected body; ctrl + left drag: rotate it;
 ///   backspace: give a dragged mocap body back to its script; esc: deselect;
-///   space: pause; tab: next camera; F1: help.
+///   space: pause; [ / ]: slower / faster; tab: next camera; F1: help.
 ///
 /// Runs inside the caller's simulation loop; call frame() every step (it only
 /// draws when a frame is due). One viewer per process; not thread safe and
@@ -65,6 +66,8 @@ class ViewerWindow {
   void requestClose();
 
   bool paused() const { return paused_; }
+  double speed() const { return speed_; }
+  void setSpeed(double speed);
   void setPaused(bool paused) { paused_ = paused; }
 
   // Programmatic access to what the mouse does (scripts, tests).
@@ -107,6 +110,7 @@ class ViewerWindow {
   int last_click_button_ = -1;
 
   bool paused_ = false;
+  double speed_ = 1.0;
   bool show_help_ = true;
   using Clock = std::chrono::steady_clock;
   Clock::time_point last_draw_{};
