@@ -1,0 +1,74 @@
+#include "perception/perception_estimator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "perception/csv_pose_source.hpp"
+
+using namespace handover::perception;
+
+namespace {
+PoseSample at(double t, double x) {
+  PoseSample s;
+  s.stamp = t;
+  s.hand.position = {x, 0.0, 0.3};
+  s.hand.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()));
+  return s;
+}
+}  // namespace
+
+TEST(PerceptionEstimator, StaleAfterMaxAgeAndNeverExtrapolates) {
+  EstimatorSettings cfg;
+  cfg.max_age = 0.1;
+  PerceptionEstimator est(cfg);
+  EXPECT_FALSE(est.estimate(0.0, ObjectHolder::Person).human.valid);
+  EXPECT_TRUE(est.estimate(0.0, ObjectHolder::Person).human.stale);
+  ASSERT_TRUE(est.addSample(at(1.0, 0.50)));
+  ASSERT_TRUE(est.addSample(at(1.02, 0.52)));  // moving at 1 m/s
+  const auto& fresh = est.estimate(1.05, ObjectHolder::Person);
+  EXPECT_TRUE(fresh.human.valid);
+  EXPECT_FALSE(fresh.human.stale);
+  EXPECT_NEAR(fresh.human.age, 0.03, 1e-12);
+  const auto& old = est.estimate(1.2, ObjectHolder::Person);
+  EXPECT_TRUE(old.human.stale);
+  EXPECT_TRUE(old.object.stale);
+  // the last sample, not a guess of where the hand went
+  EXPECT_DOUBLE_EQ(old.human.hand.translation().x(), 0.52);
+}
+
+TEST(PerceptionEstimator, RejectsOutOfOrderAndNonFinite) {
+  PerceptionEstimator est;
+  EXPECT_TRUE(est.addSample(at(1.0, 0.5)));
+  EXPECT_FALSE(est.addSample(at(0.9, 0.6)));
+  PoseSample bad = at(1.1, std::numeric_limits<double>::quiet_NaN());
+  EXPECT_FALSE(est.addSample(bad));
+  EXPECT_EQ(est.rejected(), 2);
+  EXPECT_DOUBLE_EQ(est.estimate(1.1, ObjectHolder::Person).human.hand.translation().x(), 0.5);
+}
+
+TEST(PerceptionEstimator, ObjectPoseFromWhoeverHoldsIt) {
+  EstimatorSettings cfg;
+  cfg.hand_T_object.translation() = Eigen::Vector3d(0, 0, 0.04);
+  PerceptionEstimator est(cfg);
+  // drains a source
+  CsvPoseSource src({at(0.5, 0.4), at(1.0, 0.5), at(2.0, 0.9)}, 0.0);
+  EXPECT_EQ(est.update(1.0, src), 2);
+  const auto& e = est.estimate(1.0, ObjectHolder::Person);
+  ASSERT_TRUE(e.object.valid);
+  const Eigen::Isometry3d expected = at(1.0, 0.5).hand.isometry() * cfg.hand_T_object;
+  EXPECT_TRUE(e.object.pose.isApprox(expected, 1e-12));
+
+  Eigen::Isometry3d tcp = Eigen::Isometry3d::Identity();
+  tcp.translation() = Eigen::Vector3d(0.3, 0.1, 0.45);
+  tcp.linear() = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  Eigen::Isometry3d grasp = Eigen::Isometry3d::Identity();
+  grasp.translation() = Eigen::Vector3d(0, 0, 0.02);
+  // robot holds: forward kinematics, fresh even with stale hand data
+  const auto& r = est.estimate(10.0, ObjectHolder::Robot, tcp, grasp);
+  EXPECT_TRUE(r.human.stale);
+  EXPECT_TRUE(r.object.valid);
+  EXPECT_FALSE(r.object.stale);
+  EXPECT_TRUE(r.object.pose.isApprox(tcp * grasp, 1e-12));
+  EXPECT_FALSE(est.estimate(1.0, ObjectHolder::Nobody).object.valid);
+}
