@@ -1,0 +1,77 @@
+// Per-step costs of the scripted person and the perception pipeline, which
+// run inside the 1 ms loop (simulation side and controller side).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+#include "perception/observation_target.hpp"
+#include "perception/perception_estimator.hpp"
+#include "perception/pose_codec.hpp"
+#include "perception/simulated_pose_sensor.hpp"
+#include "scenes/human/scripted_human.hpp"
+#include "scenes/scenario/scenario_parser.hpp"
+
+using namespace handover;
+
+static void BM_ScriptedHumanStep(benchmark::State& state) {
+  const auto sc = scenario::parseScenario(std::string(HANDOVER_SOURCE_DIR) + "/scenes/scenarios/h2r_moving_target.yaml");
+  human::ScriptedHuman h(sc);
+  human::HumanFacts f;
+  double t = 0.0;
+  for (auto _ : state) {
+    t += 0.001;
+    if (t > 3.5) {  // stay within the reaches
+      h.reset();
+      t = 0.0;
+    }
+    benchmark::DoNotOptimize(h.step(t, f).poses.forearm);
+  }
+}
+BENCHMARK(BM_ScriptedHumanStep);
+
+static void BM_SensorObservePoll(benchmark::State& state) {
+  perception::SensorSettings cfg;
+  cfg.latency = 0.05;
+  cfg.noise_pos = 0.002;
+  cfg.noise_rot_deg = 1.0;
+  perception::SimulatedPoseSensor s(cfg, 1);
+  sim::HumanBodyPoses b;
+  perception::PoseSample out;
+  double t = 0.0;
+  for (auto _ : state) {
+    t += 0.001;
+    s.observe(t, b);
+    while (s.poll(t, out)) benchmark::DoNotOptimize(out);
+  }
+}
+BENCHMARK(BM_SensorObservePoll);
+
+static void BM_EstimatorAndTarget(benchmark::State& state) {
+  perception::PerceptionEstimator est;
+  perception::ObservationTarget target;
+  target.select(perception::TargetSource::Object, 0.0);
+  perception::PoseSample s;
+  double t = 0.0;
+  bool hand = false;
+  for (auto _ : state) {
+    t += 0.001;
+    s.stamp = t;
+    est.addSample(s);
+    const auto& e = est.estimate(t, perception::ObjectHolder::Person);
+    if (std::fmod(t, 1.0) < 0.001) target.select((hand = !hand) ? perception::TargetSource::Hand
+                                                                : perception::TargetSource::Object, t);
+    benchmark::DoNotOptimize(target.update(t, e).pose);
+  }
+}
+BENCHMARK(BM_EstimatorAndTarget);
+
+static void BM_DecodeDatagram(benchmark::State& state) {
+  perception::PoseSample s;
+  s.stamp = 12.345678;
+  s.hand.position = {0.55, 0.05, 0.3};
+  char buf[perception::kMaxEncodedSample];
+  perception::encodeSample(s, ',', buf, sizeof buf);
+  perception::PoseSample out;
+  for (auto _ : state) benchmark::DoNotOptimize(perception::decodeSample(buf, ',', out));
+}
+BENCHMARK(BM_DecodeDatagram);
