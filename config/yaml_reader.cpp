@@ -220,8 +220,9 @@ void applyOverrides(YAML::Node doc, const YamlReader& overrides, const std::stri
   if (!overrides.isMap()) overrides.fail("expected a map of dotted keys to values");
   for (const std::string& dotted : overrides.keys()) {
     const YamlReader value = overrides.child(dotted);
-    // walk the dotted path; each step must exist already
-    std::vector<YAML::Node> chain{doc};
+    // walk the dotted path; each step must exist already. yaml-cpp's
+    // Node::operator= writes through to the node, so the walking handle is
+    // rebound with reset(), never assigned.
     std::string part;
     std::stringstream ss(dotted);
     std::vector<std::string> parts;
@@ -233,7 +234,7 @@ void applyOverrides(YAML::Node doc, const YamlReader& overrides, const std::stri
       if (!next.IsDefined() || !next.IsMap()) {
         value.fail("'" + dotted + "' does not name a setting of " + target_file);
       }
-      cur = next;
+      cur.reset(next);
     }
     YAML::Node leaf = cur[parts.back()];
     if (!leaf.IsDefined()) value.fail("'" + dotted + "' does not name a setting of " + target_file);
