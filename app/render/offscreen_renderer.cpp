@@ -66,10 +66,15 @@ OffscreenRenderer::OffscreenRenderer(const mjModel* m, const OffscreenOptions& o
 }
 
 OffscreenRenderer::~OffscreenRenderer() {
-  egl_->makeCurrent();
-  mjr_freeContext(&context_);
+  try {
+    egl_->makeCurrent();
+    mjr_freeContext(&context_);
+    egl_->release();
+  } catch (const std::exception&) {
+    // another API's context is current on this thread: the GL objects go
+    // away with the EGL context itself
+  }
   mjv_freeScene(&scene_);
-  egl_->release();
 }
 
 const std::vector<unsigned char>& OffscreenRenderer::render(const mjModel* m, mjData* d,

@@ -42,9 +42,9 @@ Scene& scene() {
   return s;
 }
 
-void renderFrame(benchmark::State& state, bool fast) {
+void renderFrame(benchmark::State& state, bool fast, int width = 640, int height = 480) {
   Scene& s = scene();
-  OffscreenRenderer renderer(s.model.get(), {640, 480, "overview", fast});
+  OffscreenRenderer renderer(s.model.get(), {width, height, "overview", fast});
   for (auto _ : state) {
     const auto& rgb = renderer.render(s.model.get(), s.data, "time\nstate", "1.00 s\napproach");
     benchmark::DoNotOptimize(rgb.data());
@@ -54,6 +54,7 @@ void renderFrame(benchmark::State& state, bool fast) {
 
 void BM_Render640x480_Fast(benchmark::State& state) { renderFrame(state, true); }
 void BM_Render640x480_ShadowsMultisampling(benchmark::State& state) { renderFrame(state, false); }
+void BM_Render320x240_Fast(benchmark::State& state) { renderFrame(state, true, 320, 240); }
 
 // render + flip + pipe into ffmpeg (x264 veryfast runs in parallel in its own process)
 void BM_RecordFrame640x480(benchmark::State& state) {
@@ -75,4 +76,5 @@ void BM_RecordFrame640x480(benchmark::State& state) {
 
 BENCHMARK(BM_Render640x480_Fast)->Unit(benchmark::kMillisecond)->Iterations(60);
 BENCHMARK(BM_Render640x480_ShadowsMultisampling)->Unit(benchmark::kMillisecond)->Iterations(30);
+BENCHMARK(BM_Render320x240_Fast)->Unit(benchmark::kMillisecond)->Iterations(60);
 BENCHMARK(BM_RecordFrame640x480)->Unit(benchmark::kMillisecond)->Iterations(60);
