@@ -10,6 +10,7 @@ packages=(
   libfcl-dev libccd-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy ffmpeg xvfb
+  libegl-mesa0 libgl1-mesa-dri   # render: Mesa EGL (surfaceless platform) and its software GL driver
 )
 
 missing=()
