@@ -26,11 +26,11 @@ struct ControllerConfig {
 
   struct Observation {
     PdGains gains = PdGains::critical(1500.0);
-    double weight = 1e5;
+    double weight = 1e7;
   } observation;
 
   struct Tracking {
-    double weight = 1000.0;
+    double weight = 1e5;
     AxisGains translation{PdGains::critical(1.0)};
     AxisGains orientation{PdGains::critical(2.0)};
   } tracking;
@@ -42,7 +42,7 @@ struct ControllerConfig {
   } posture;
 
   struct PoseTask {
-    double weight = 1000.0;
+    double weight = 1e5;
     AxisGains translation{PdGains::critical(2.0)};
     AxisGains orientation{PdGains::critical(2.0)};
   } pose_task;
@@ -55,7 +55,7 @@ struct ControllerConfig {
   } limits;
 
   struct Qp {
-    double regularisation = 1e-6;
+    double regularisation = 1e-3;  ///< must stay well above 1e-13 x the largest weight (solver pivot test)
     int max_iterations = 1000;
   } qp;
 

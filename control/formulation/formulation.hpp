@@ -101,7 +101,7 @@ class Formulation {
   std::vector<TaskEntry> tasks_;
   std::vector<ConstraintEntry> constraints_;
   int constraint_rows_ = 0;  // sum of maxRows() of the registered constraints
-  double rho_ = 1e-6;
+  double rho_ = 1e-3;
   Eigen::MatrixXd A_;        // kMaxTaskRows x kNumVars scratch for one task
   Eigen::VectorXd b_;        // kMaxTaskRows
 };

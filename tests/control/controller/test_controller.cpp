@@ -1,0 +1,184 @@
+// Controller end to end on a kinematic simulation (q integrated from the
+// solved qddot): the TCP meets the grasp frame of a moving object, the
+// observation target is held on invalid measurements, the joint limits hold
+// under a posture that pushes beyond them, and failures fall back safely.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "control/controller.hpp"
+#include "control/so3.hpp"
+
+using namespace handover::control;
+
+namespace {
+
+const Model& panda() {
+  static const Model m = loadModel(std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf");
+  return m;
+}
+
+struct KinematicSim {
+  Vector7 q, v = Vector7::Zero();
+  double t = 0.0;
+  ControlInputs inputs() const {
+    ControlInputs in;
+    in.time = t;
+    in.q = q;
+    in.qd = v;
+    return in;
+  }
+  void advance(const Vector7& qdd, double dt) {
+    q += v * dt + 0.5 * qdd * dt * dt;
+    v += qdd * dt;
+    t += dt;
+  }
+};
+
+}  // namespace
+
+TEST(Controller, TcpMeetsGraspFrameOfMovingObject) {
+  Controller ctl(panda(), loadControllerConfig(defaultControllerConfigPath()));
+  KinematicSim sim;
+  sim.q = ctl.config().posture.target;
+  ctl.reset(sim.inputs());
+  GraspOffset offset;
+  offset.placement.translation() = Vector3(0.0, 0.0, 0.03);
+  offset.placement.linear() = expRotation(Vector3(M_PI, 0.0, 0.0));  // approach from above
+  ctl.setGraspOffset(offset);
+
+  // object carried by a person: from (0.7, 0.25, 0.35) to (0.5, 0.0, 0.25), then still
+  const Isometry start_tcp = ctl.tcpPose();
+  Isometry obj = Isometry::Identity();
+  const Vector3 p0(0.7, 0.25, 0.35), p1(0.5, 0.0, 0.25);
+  const double dt = ctl.config().period;
+  for (int k = 0; k < 12000; ++k) {
+    const double s = std::min(1.0, sim.t / 1.5);
+    obj.translation() = p0 + (p1 - p0) * (10 * s * s * s - 15 * s * s * s * s + 6 * s * s * s * s * s);
+    obj.linear() = expRotation(Vector3(0.0, 0.0, 0.4 * s));
+    ctl.setObservationTarget(obj, (k % 17) == 0);  // a 60 Hz-like sensor
+    ctl.step(sim.inputs());
+    ASSERT_FALSE(ctl.lastStepFellBack()) << "step " << k << " status " << toString(ctl.lastStatus());
+    sim.advance(ctl.lastQdd(), dt);
+  }
+  // the observed object sits on the measurement, the TCP on the grasp frame
+  EXPECT_LT((ctl.observedState().pose.translation() - obj.translation()).norm(), 1e-3);
+  const GraspFrameState g = ctl.graspFrame();
+  const Isometry expected_grasp = obj * offset.placement;
+  EXPECT_LT((g.pose.translation() - expected_grasp.translation()).norm(), 2e-3);
+  EXPECT_LT((ctl.tcpPose().translation() - g.pose.translation()).norm(), 5e-3);
+  EXPECT_LT(logRotation(ctl.tcpPose().linear() * g.pose.linear().transpose()).norm(), 0.02);
+  EXPECT_GT((start_tcp.translation() - ctl.tcpPose().translation()).norm(), 0.1);  // it did move
+  EXPECT_EQ(ctl.fallbackCount(), 0);
+}
+
+TEST(Controller, HoldsTheLastValidObservation) {
+  Controller ctl(panda(), ControllerConfig());
+  KinematicSim sim;
+  sim.q = ctl.config().posture.target;
+  ctl.reset(sim.inputs());
+  Isometry a = ctl.observationTarget();
+  a.translation() += Vector3(0.02, 0.0, 0.0);
+  ctl.setObservationTarget(a, true);
+  Isometry bogus = a;
+  bogus.translation() += Vector3(1.0, 1.0, 1.0);
+  ctl.setObservationTarget(bogus, false);  // invalid: ignored
+  Isometry nan_pose = a;
+  nan_pose.translation()[1] = std::nan("");
+  ctl.setObservationTarget(nan_pose, true);  // non-finite: ignored
+  EXPECT_LT((ctl.observationTarget().translation() - a.translation()).norm(), 1e-15);
+  for (int k = 0; k < 500; ++k) {
+    ctl.step(sim.inputs());
+    sim.advance(ctl.lastQdd(), ctl.config().period);
+  }
+  // converged on the held target, not drifting past it (no extrapolation)
+  EXPECT_LT((ctl.observedState().pose.translation() - a.translation()).norm(), 1e-4);
+  EXPECT_LT(ctl.observedState().velocity.norm(), 1e-2);
+}
+
+TEST(Controller, JointLimitsHoldAgainstAPostureBeyondThem) {
+  ControllerConfig cfg;
+  cfg.posture.gains = PdGains::critical(200.0);
+  cfg.posture.weight = 1000.0;
+  Controller ctl(panda(), cfg);
+  KinematicSim sim;
+  sim.q = cfg.posture.target;
+  ctl.reset(sim.inputs());
+  ctl.setTaskEnabled("tracking", false);
+  const Model& m = panda();
+  Vector7 beyond;
+  for (int i = 0; i < 7; ++i) beyond[i] = (i % 2 == 0) ? m.q_max[i] + 0.5 : m.q_min[i] - 0.5;
+  ctl.setPostureTarget(beyond);
+  const Vector7 vlim = 0.5 * m.v_max;
+  for (int k = 0; k < 5000; ++k) {
+    ctl.step(sim.inputs());
+    sim.advance(ctl.lastQdd(), ctl.config().period);
+    for (int i = 0; i < 7; ++i) {
+      ASSERT_GT(sim.q[i], m.q_min[i]) << "joint " << i + 1 << " step " << k;
+      ASSERT_LT(sim.q[i], m.q_max[i]) << "joint " << i + 1 << " step " << k;
+      ASSERT_LE(std::abs(sim.v[i]), vlim[i] + 1e-9) << "joint " << i + 1 << " step " << k;
+    }
+  }
+  EXPECT_EQ(ctl.fallbackCount(), 0);
+  // and it did go close to the limits it was pushed toward
+  for (int i = 0; i < 7; ++i) {
+    const double gap = (i % 2 == 0) ? m.q_max[i] - sim.q[i] : sim.q[i] - m.q_min[i];
+    EXPECT_LT(gap, 0.1 * (m.q_max[i] - m.q_min[i])) << "joint " << i + 1;
+  }
+}
+
+TEST(Controller, NanInputsGiveADampedStop) {
+  Controller ctl(panda(), ControllerConfig());
+  KinematicSim sim;
+  sim.q = ctl.config().posture.target;
+  sim.v << 0.3, -0.2, 0.1, 0.2, -0.1, 0.3, 0.2;
+  ctl.reset(sim.inputs());
+  ctl.step(sim.inputs());
+  ASSERT_FALSE(ctl.lastStepFellBack());
+  ControlInputs bad = sim.inputs();
+  bad.qd[3] = std::nan("");
+  const Vector7 tau = ctl.step(bad);
+  EXPECT_TRUE(ctl.lastStepFellBack());
+  EXPECT_EQ(ctl.fallbackCount(), 1);
+  EXPECT_TRUE(tau.allFinite());
+  // the stop opposes the last valid velocity, within the acceleration limits
+  const double kd = ctl.config().fallback.damping;
+  for (int i = 0; i < 7; ++i) {
+    const double expected = std::clamp(-kd * sim.v[i], -panda().a_max[i], panda().a_max[i]);
+    EXPECT_NEAR(ctl.lastQdd()[i], expected, 1e-12);
+  }
+  EXPECT_LT((tau - (ctl.data().M * ctl.lastQdd() + ctl.data().h)).cwiseAbs().maxCoeff(), 1e-9);
+  // back to normal on the next good input
+  ctl.step(sim.inputs());
+  EXPECT_FALSE(ctl.lastStepFellBack());
+  EXPECT_EQ(ctl.lastStatus(), QpStatus::kOptimal);
+}
+
+TEST(Controller, InfeasibleQpFallsBackAndCounts) {
+  // torque limits below gravity at rest: no qddot satisfies them
+  ControllerConfig cfg;
+  cfg.limits.torque_scale = 0.01;
+  Controller ctl(panda(), cfg);
+  KinematicSim sim;
+  sim.q = cfg.posture.target;
+  sim.v << 0.2, 0.1, 0.0, 0.0, 0.0, 0.0, 0.0;
+  ctl.reset(sim.inputs());
+  for (int k = 0; k < 3; ++k) ctl.step(sim.inputs());
+  EXPECT_NE(ctl.lastStatus(), QpStatus::kOptimal);
+  EXPECT_TRUE(ctl.lastStepFellBack());
+  EXPECT_EQ(ctl.fallbackCount(), 3);
+  EXPECT_LT(ctl.lastQdd()[0], 0.0);  // braking joint 1
+  // torques are clipped to the limits in force
+  const Vector7 lim = 0.01 * panda().tau_max;
+  EXPECT_TRUE((ctl.lastTau().cwiseAbs().array() <= lim.array() + 1e-12).all());
+}
+
+TEST(Controller, TaskSwitchesByName) {
+  Controller ctl(panda(), ControllerConfig());
+  EXPECT_TRUE(ctl.setTaskEnabled("pose", true));
+  EXPECT_TRUE(ctl.formulation().taskEnabled("pose"));
+  EXPECT_FALSE(ctl.setTaskEnabled("no_such_task", true));
+  EXPECT_TRUE(ctl.setConstraintEnabled("joint_torque", false));
+  EXPECT_FALSE(ctl.formulation().constraintEnabled("joint_torque"));
+  EXPECT_FALSE(ctl.setConstraintEnabled("nope", false));
+}

@@ -1,0 +1,92 @@
+// controller.yaml: the shipped file loads; bad files are InputErrors that
+// name the file, the dotted key and the line.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "control/controller_config.hpp"
+
+using namespace handover;
+using namespace handover::control;
+
+namespace {
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const std::string path = std::string(::testing::TempDir()) + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// Expects loading `text` to fail with a message naming file, key and line.
+void expectError(const std::string& text, const std::string& key, int line) {
+  const std::string path = writeTemp("ctl_bad.yaml", text);
+  try {
+    loadControllerConfig(path);
+    FAIL() << "no error for:\n" << text;
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find(path), std::string::npos) << msg;
+    EXPECT_NE(msg.find(key), std::string::npos) << msg;
+    EXPECT_NE(msg.find(":" + std::to_string(line) + ":"), std::string::npos) << msg;
+  }
+}
+
+}  // namespace
+
+TEST(ControllerConfig, ShippedFileLoadsWithPaperDefaults) {
+  const ControllerConfig c = loadControllerConfig(defaultControllerConfigPath());
+  EXPECT_DOUBLE_EQ(c.observation.gains.stiffness, 1500.0);
+  EXPECT_NEAR(c.observation.gains.damping, 2.0 * std::sqrt(1500.0), 1e-12);
+  EXPECT_DOUBLE_EQ(c.tracking.translation.gains.stiffness, 1.0);
+  EXPECT_NEAR(c.tracking.translation.gains.damping, 2.0, 1e-12);
+  EXPECT_DOUBLE_EQ(c.tracking.orientation.gains.stiffness, 2.0);
+  EXPECT_NEAR(c.tracking.orientation.gains.damping, 2.0 * std::sqrt(2.0), 1e-12);
+  EXPECT_DOUBLE_EQ(c.posture.gains.stiffness, 10.0);
+  EXPECT_DOUBLE_EQ(c.posture.weight, 5.0);
+  EXPECT_DOUBLE_EQ(c.limits.velocity_scale, 0.5);
+  EXPECT_DOUBLE_EQ(c.limits.position.interaction, 0.10);
+  EXPECT_DOUBLE_EQ(c.limits.position.safety, 0.01);
+}
+
+TEST(ControllerConfig, ValuesAndExplicitDampingAreRead) {
+  const std::string path = writeTemp("ctl_ok.yaml",
+                                     "tracking:\n"
+                                     "  weight: 50\n"
+                                     "  orientation:\n"
+                                     "    stiffness: 9.0\n"
+                                     "    damping: 1.5\n"
+                                     "    weights: [1, 2, 0]\n"
+                                     "  translation: {stiffness: 4.0}\n");
+  const ControllerConfig c = loadControllerConfig(path);
+  EXPECT_DOUBLE_EQ(c.tracking.weight, 50.0);
+  EXPECT_DOUBLE_EQ(c.tracking.orientation.gains.damping, 1.5);
+  EXPECT_EQ(c.tracking.orientation.weights, Vector3(1, 2, 0));
+  EXPECT_NEAR(c.tracking.translation.gains.damping, 4.0, 1e-12);  // auto: 2 sqrt(4)
+}
+
+TEST(ControllerConfig, UnknownKeyNamesFileKeyAndLine) {
+  expectError("observation:\n  stiffness: 1500\ntracking:\n  translation:\n    stifness: 2\n",
+              "tracking.translation.stifness", 5);
+}
+
+TEST(ControllerConfig, OutOfRangeValueNamesFileKeyAndLine) {
+  expectError("limits:\n  velocity:\n    scale: 3.0\n", "limits.velocity.scale", 3);
+}
+
+TEST(ControllerConfig, WrongTypeNamesFileKeyAndLine) {
+  expectError("qp:\n  regularisation: lots\n", "qp.regularisation", 2);
+}
+
+TEST(ControllerConfig, WrongVectorLengthNamesFileKeyAndLine) {
+  expectError("posture:\n  weight: 5\n  target: [0, 1, 2]\n", "posture.target", 3);
+}
+
+TEST(ControllerConfig, InconsistentMarginsAreRejected) {
+  expectError("limits:\n  position:\n    interaction: 0.05\n    safety: 0.2\n", "limits.position", 3);
+}
+
+TEST(ControllerConfig, MissingFileIsAnInputError) {
+  EXPECT_THROW(loadControllerConfig("/nonexistent/controller.yaml"), InputError);
+}

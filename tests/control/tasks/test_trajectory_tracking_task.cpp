@@ -1,0 +1,281 @@
+// Trajectory-tracking task rows against numerical differentiation of the true
+// kinematics: with zero gains, A chi - b must equal the error's second
+// derivative (translation), the relative angular acceleration (full
+// orientation), or the projected second derivative of c = b - a (free axis),
+// for any qddot and any alphadot_obs (the coupling).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "control/model/algorithms.hpp"
+#include "control/so3.hpp"
+#include "control/tasks/observed_object_integrator.hpp"
+#include "control/tasks/trajectory_tracking_task.hpp"
+
+using namespace handover::control;
+
+namespace {
+
+const Model& panda() {
+  static const Model m = loadModel(std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf");
+  return m;
+}
+
+// A motion of the arm (constant qddot) and of the observed object (constant
+// alphadot_obs), evaluated at any time t around 0.
+struct Motion {
+  Vector7 q0, qd0, qdd;
+  Isometry X0;
+  Vector6 alpha0, alphadot;
+
+  ObservedState object(double t) const {
+    ObservedObjectIntegrator integ;
+    integ.reset(X0, alpha0);
+    const int n = 200;  // substeps: the integrator is second order in rotation
+    for (int k = 0; k < n; ++k) integ.integrate(alphadot, t / n);
+    return integ.state();
+  }
+  void arm(double t, Vector7& q, Vector7& v) const {
+    q = q0 + qd0 * t + 0.5 * qdd * t * t;
+    v = qd0 + qdd * t;
+  }
+};
+
+Motion randomMotion(std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Motion m;
+  m.q0 << 0.1, -0.6, 0.2, -2.2, 0.3, 1.7, 0.6;
+  for (int i = 0; i < 7; ++i) {
+    m.q0[i] += 0.2 * u(rng);
+    m.qd0[i] = 0.6 * u(rng);
+    m.qdd[i] = 2.0 * u(rng);
+  }
+  m.X0 = Isometry::Identity();
+  m.X0.translation() = Vector3(0.5 + 0.1 * u(rng), 0.1 * u(rng), 0.3 + 0.1 * u(rng));
+  m.X0.linear() = expRotation(Vector3(u(rng), u(rng), u(rng)));
+  for (int i = 0; i < 6; ++i) {
+    m.alpha0[i] = 0.8 * u(rng);
+    m.alphadot[i] = 3.0 * u(rng);
+  }
+  return m;
+}
+
+GraspOffset someOffset(bool free_axis) {
+  GraspOffset g;
+  g.placement.translation() = Vector3(0.03, -0.02, 0.08);
+  g.placement.linear() = expRotation(Vector3(0.3, -0.5, 0.9));
+  g.has_free_axis = free_axis;
+  g.free_axis = Vector3(0.2, 0.1, 1.0).normalized();
+  return g;
+}
+
+struct Rows {
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(6, kNumVars);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(6);
+};
+
+Rows computeRows(TrajectoryTrackingTask& task, const Motion& m, Data& data) {
+  computeAll(panda(), data, m.q0, m.qd0);
+  ControlContext ctx;
+  ctx.model = &panda();
+  ctx.data = &data;
+  ctx.observed = m.object(0.0);
+  Rows r;
+  task.compute(ctx, r.A, r.b);
+  return r;
+}
+
+Eigen::VectorXd chiOf(const Motion& m) {
+  Eigen::VectorXd chi(kNumVars);
+  chi << m.qdd, m.alphadot;
+  return chi;
+}
+
+// True quantities along the motion, from forward kinematics only.
+struct Truth {
+  const Motion& m;
+  const GraspOffset& g;
+  Matrix3 R_grasp_frozen;  // nearest-grasp choice frozen at t = 0 (free-axis mode)
+  int tcp;
+
+  Isometry tcpPose(double t, Vector6* vel = nullptr) const {
+    Data d(panda());
+    Vector7 q, v;
+    m.arm(t, q, v);
+    forwardKinematics(panda(), d, q, v);
+    if (vel) *vel = frameVelocity(panda(), d, tcp);
+    return framePlacement(panda(), d, tcp);
+  }
+  Vector3 positionError(double t) const {
+    const ObservedState o = m.object(t);
+    // grasp point: with a free axis, rotated about the axis as chosen at t = 0
+    const Matrix3 rot_obs0 = R_grasp_frozen * g.placement.linear().transpose();  // R_obs(0) Rot(phi)
+    const Matrix3 rot_phi = m.X0.linear().transpose() * rot_obs0;
+    const Vector3 r = o.pose.linear() * rot_phi * g.placement.translation();
+    return tcpPose(t).translation() - (o.pose.translation() + r);
+  }
+  Vector3 relativeOmega(double t) const {
+    Vector6 v;
+    tcpPose(t, &v);
+    return v.tail<3>() - m.object(t).velocity.tail<3>();
+  }
+  Vector3 axisError(double t) const {
+    const Vector3 u = g.placement.linear().transpose() * g.free_axis;
+    return tcpPose(t).linear() * u - m.object(t).pose.linear() * g.free_axis;
+  }
+};
+
+constexpr double kH = 1e-3;
+
+template <class F>
+Eigen::Vector3d secondDerivative(F f) {
+  return (f(kH) - 2.0 * f(0.0) + f(-kH)) / (kH * kH);
+}
+template <class F>
+Eigen::Vector3d firstDerivative(F f) {
+  return (f(kH) - f(-kH)) / (2.0 * kH);
+}
+
+}  // namespace
+
+TEST(TrajectoryTrackingTask, RowsMatchNumericalDifferentiation) {
+  std::mt19937 rng(42);
+  Data data(panda());
+  for (int trial = 0; trial < 5; ++trial) {
+    const Motion m = randomMotion(rng);
+    const GraspOffset g = someOffset(false);
+    TrajectoryTrackingTask task(panda(), "tracking", "tcp", PdGains{0.0, 0.0}, PdGains{0.0, 0.0});
+    task.setGraspOffset(g);
+    const Rows rows = computeRows(task, m, data);
+    const Eigen::VectorXd pred = rows.A * chiOf(m) - rows.b;
+
+    Truth truth{m, g, m.X0.linear() * g.placement.linear(), panda().frameId("tcp")};
+    const Vector3 epp = secondDerivative([&](double t) { return truth.positionError(t); });
+    const Vector3 wd = firstDerivative([&](double t) { return truth.relativeOmega(t); });
+    EXPECT_LT((pred.head<3>() - epp).norm(), 1e-4 * (1.0 + epp.norm())) << "trial " << trial;
+    EXPECT_LT((pred.tail<3>() - wd).norm(), 1e-4 * (1.0 + wd.norm())) << "trial " << trial;
+  }
+}
+
+TEST(TrajectoryTrackingTask, CouplingToObjectAccelerationIsInTheRows) {
+  // Perturb only alphadot_obs: the predicted change of the error acceleration
+  // must equal the finite-difference change of the true error acceleration.
+  std::mt19937 rng(5);
+  Data data(panda());
+  Motion m = randomMotion(rng);
+  const GraspOffset g = someOffset(false);
+  TrajectoryTrackingTask task(panda(), "tracking", "tcp", PdGains{0.0, 0.0}, PdGains{0.0, 0.0});
+  task.setGraspOffset(g);
+  const Rows rows = computeRows(task, m, data);
+  const int tcp = panda().frameId("tcp");
+
+  Motion m2 = m;
+  m2.alphadot << 0.0, 0.0, 0.0, 4.0, -3.0, 5.0;  // angular only: the [r]x lever term
+  Truth t1{m, g, m.X0.linear() * g.placement.linear(), tcp};
+  Truth t2{m2, g, m2.X0.linear() * g.placement.linear(), tcp};
+  const Vector3 d_true = secondDerivative([&](double t) { return t2.positionError(t); }) -
+                         secondDerivative([&](double t) { return t1.positionError(t); });
+  const Eigen::VectorXd d_pred = rows.A * (chiOf(m2) - chiOf(m));
+  EXPECT_GT(d_true.norm(), 0.05);  // the perturbation matters
+  EXPECT_LT((d_pred.head<3>() - d_true).norm(), 1e-4 * (1.0 + d_true.norm()));
+}
+
+TEST(TrajectoryTrackingTask, GainsGiveThePdLaw) {
+  std::mt19937 rng(11);
+  Data data(panda());
+  const Motion m = randomMotion(rng);
+  const GraspOffset g = someOffset(false);
+  TrajectoryTrackingTask free_task(panda(), "t0", "tcp", PdGains{0.0, 0.0}, PdGains{0.0, 0.0});
+  TrajectoryTrackingTask task(panda(), "t1", "tcp", PdGains{3.0, 1.5}, PdGains{5.0, 2.5});
+  free_task.setGraspOffset(g);
+  task.setGraspOffset(g);
+  const Rows r0 = computeRows(free_task, m, data);
+  const Rows r1 = computeRows(task, m, data);
+  EXPECT_LT((r1.A - r0.A).norm(), 1e-15);
+
+  Truth truth{m, g, m.X0.linear() * g.placement.linear(), panda().frameId("tcp")};
+  const Vector3 e = truth.positionError(0.0);
+  const Vector3 ed = firstDerivative([&](double t) { return truth.positionError(t); });
+  EXPECT_LT(((r1.b - r0.b).head<3>() - (-3.0 * e - 1.5 * ed)).norm(), 1e-6);
+  // orientation: -K (tcp (-) grasp) - D (omega_tcp - omega_obs)
+  const Matrix3 R_g = m.X0.linear() * g.placement.linear();
+  const Vector3 eo = orientationError(truth.tcpPose(0.0).linear(), R_g);
+  const Vector3 wrel = truth.relativeOmega(0.0);
+  EXPECT_LT(((r1.b - r0.b).tail<3>() - (-5.0 * eo - 2.5 * wrel)).norm(), 1e-9);
+  EXPECT_LT((task.error().head<3>() - e).norm(), 1e-12);
+}
+
+TEST(TrajectoryTrackingTask, FreeAxisRowsAreExactAndLeaveSpinFree) {
+  std::mt19937 rng(9);
+  Data data(panda());
+  for (int trial = 0; trial < 4; ++trial) {
+    const Motion m = randomMotion(rng);
+    const GraspOffset g = someOffset(true);
+    TrajectoryTrackingTask task(panda(), "tracking", "tcp", PdGains{0.0, 0.0}, PdGains{0.0, 0.0});
+    task.setGraspOffset(g);
+    const Rows rows = computeRows(task, m, data);
+    const Eigen::VectorXd pred = rows.A * chiOf(m) - rows.b;
+
+    const int tcp = panda().frameId("tcp");
+    const ObservedState o0 = m.object(0.0);
+    Truth probe{m, g, Matrix3::Identity(), tcp};
+    const Matrix3 R_ee = probe.tcpPose(0.0).linear();
+    Truth truth{m, g, graspRotation(o0, g, R_ee), tcp};
+
+    // orientation rows: P c'' with P the projector normal to b = R_tcp u
+    const Vector3 u = g.placement.linear().transpose() * g.free_axis;
+    const Vector3 bvec = R_ee * u;
+    const Matrix3 P = Matrix3::Identity() - bvec * bvec.transpose();
+    const Vector3 cpp = secondDerivative([&](double t) { return truth.axisError(t); });
+    EXPECT_LT((pred.tail<3>() - P * cpp).norm(), 1e-4 * (1.0 + cpp.norm())) << "trial " << trial;
+    // translation rows toward the nearest grasp point (choice frozen over the step)
+    const Vector3 epp = secondDerivative([&](double t) { return truth.positionError(t); });
+    EXPECT_LT((pred.head<3>() - epp).norm(), 1e-4 * (1.0 + epp.norm())) << "trial " << trial;
+    // spinning the gripper about b costs nothing: those qddot columns see no b component
+    Matrix6x7 J;
+    frameJacobian(panda(), data, tcp, J);
+    EXPECT_LT((bvec.transpose() * rows.A.block(3, 0, 3, kArmDofs)).norm(), 1e-12);
+    EXPECT_LT((rows.A.block(3, 0, 3, kArmDofs) * J.bottomRows<3>().completeOrthogonalDecomposition().pseudoInverse() *
+               bvec)
+                  .norm(),
+              1e-9);
+  }
+}
+
+TEST(GraspFrame, NearestGraspAroundTheFreeAxis) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  GraspOffset g = someOffset(true);
+  for (int trial = 0; trial < 20; ++trial) {
+    ObservedState o;
+    o.pose.linear() = expRotation(Vector3(u(rng), u(rng), u(rng)));
+    const Matrix3 R_ee = expRotation(Vector3(2 * u(rng), 2 * u(rng), 2 * u(rng)));
+    const Matrix3 R_g = graspRotation(o, g, R_ee);
+    // a member of the family: maps the gripper's axis onto the object's axis
+    const Vector3 uax = g.placement.linear().transpose() * g.free_axis;
+    EXPECT_LT((R_g * uax - o.pose.linear() * g.free_axis).norm(), 1e-9);
+    const double best = logRotation(R_g * R_ee.transpose()).norm();
+    for (int k = 0; k < 72; ++k) {
+      const Matrix3 cand = o.pose.linear() * expRotation(g.free_axis * (k * M_PI / 36.0)) * g.placement.linear();
+      EXPECT_LE(best, logRotation(cand * R_ee.transpose()).norm() + 1e-9);
+    }
+  }
+}
+
+TEST(GraspFrame, StateFollowsRigidBodyRelations) {
+  // velocity and acceleration of the grasp point against finite differences
+  std::mt19937 rng(8);
+  const Motion m = randomMotion(rng);
+  const GraspOffset g = someOffset(false);
+  auto point = [&](double t) {
+    const ObservedState o = m.object(t);
+    return Vector3(graspFrameState(o, m.alphadot, g, Matrix3::Identity()).pose.translation());
+  };
+  const GraspFrameState s = graspFrameState(m.object(0.0), m.alphadot, g, Matrix3::Identity());
+  const Vector3 v_fd = firstDerivative(point);
+  const Vector3 a_fd = secondDerivative(point);
+  EXPECT_LT((s.velocity.head<3>() - v_fd).norm(), 1e-5);
+  EXPECT_LT((s.acceleration.head<3>() - a_fd).norm(), 1e-4 * (1.0 + a_fd.norm()));
+  EXPECT_LT((s.acceleration.tail<3>() - m.alphadot.tail<3>()).norm(), 1e-15);
+}
