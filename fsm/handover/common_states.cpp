@@ -1,0 +1,101 @@
+#include "fsm/handover/common_states.hpp"
+
+#include <cmath>
+
+#include "fsm/handover/perception_checks.hpp"
+
+namespace handover::fsm {
+
+namespace {
+const Isometry& namedPose(const HandoverParams& p, const std::string& name) {
+  if (name == "safe") return p.safe_pose;
+  if (name == "ready") return p.ready_pose;
+  return p.stow_pose;
+}
+constexpr double kDeg = M_PI / 180.0;
+}  // namespace
+
+SelectDirection::SelectDirection() : take_(declareOutput("Take")), give_(declareOutput("Give")) {}
+
+bool SelectDirection::onRun(HandoverContext& ctx) {
+  setOutput(ctx.in.holds_object ? give_ : take_);
+  return true;
+}
+
+Rest::Rest() = default;
+
+void Rest::configure(const YamlReader& def) {
+  const std::string o = def.child("outcome").asEnum({"success", "aborted", "failed"});
+  outcome_ = o == "success" ? "success" : (o == "aborted" ? "aborted" : "failed");
+  declareOutput("Never");  // a final state; declared so the table can be checked
+}
+
+void Rest::onStart(HandoverContext& ctx) {
+  ctrl().enableTracking(false);
+  ctrl().setObservationTarget(ObservationTarget::kNone);
+  ctrl().setPoseTarget(ctx.in.tcp_pose);
+  ctx.stats.outcome = outcome_;
+  if (outcome_[0] == 's') ++ctx.stats.handovers;
+}
+
+bool Rest::onRun(HandoverContext& ctx) {
+  (void)ctx;
+  return false;
+}
+
+Retract::Retract() : stowed_(declareOutput("Stowed")) {}
+
+void Retract::configure(const YamlReader& def) {
+  pose_ = def.child("pose").asEnum({"stow", "safe", "ready"});
+  pos_tol_ = readPositive(def, "position_tolerance", 0.5);
+  rot_tol_ = readPositive(def, "orientation_tolerance_deg", 180.0) * kDeg;
+  settle_speed_ = readPositive(def, "settle_speed", 1.0);
+}
+
+void Retract::onStart(HandoverContext& ctx) {
+  ctrl().enableTracking(false);
+  ctrl().setObservationTarget(ObservationTarget::kNone);
+  ctrl().setPoseTarget(namedPose(*ctx.params, pose_));
+}
+
+bool Retract::onRun(HandoverContext& ctx) {
+  const Isometry& goal = namedPose(*ctx.params, pose_);
+  if (positionError(ctx.in.tcp_pose, goal) <= pos_tol_ && rotationError(ctx.in.tcp_pose, goal) <= rot_tol_ &&
+      ctx.in.tcp_velocity.head<3>().norm() <= settle_speed_) {
+    setOutput(stowed_);
+    return true;
+  }
+  return false;
+}
+
+Retreat::Retreat() : retry_(declareOutput("Retry")), give_up_(declareOutput("GiveUp")) {}
+
+void Retreat::configure(const YamlReader& def) {
+  open_ = def.child("gripper").asEnum({"keep", "open"}) == "open";
+  pos_tol_ = readPositive(def, "position_tolerance", 0.5);
+  settle_speed_ = readPositive(def, "settle_speed", 1.0);
+}
+
+void Retreat::onStart(HandoverContext& ctx) {
+  ++ctx.stats.aborts;
+  if (open_) ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
+  ctrl().enableTracking(false);
+  ctrl().setObservationTarget(ObservationTarget::kNone);
+  ctrl().setPoseTarget(ctx.params->safe_pose);
+}
+
+bool Retreat::onRun(HandoverContext& ctx) {
+  if (positionError(ctx.in.tcp_pose, ctx.params->safe_pose) > pos_tol_ ||
+      ctx.in.tcp_velocity.head<3>().norm() > settle_speed_) {
+    return false;
+  }
+  if (ctx.stats.retries < ctx.params->max_retries) {
+    ++ctx.stats.retries;
+    setOutput(retry_);
+  } else {
+    setOutput(give_up_);
+  }
+  return true;
+}
+
+}  // namespace handover::fsm

@@ -1,0 +1,64 @@
+// States used by both directions. Outputs in brackets.
+#pragma once
+
+#include "fsm/handover/handover_state.hpp"
+
+namespace handover::fsm {
+
+/// [Take, Give] Give when the controller says the gripper holds the object.
+class SelectDirection : public HandoverState {
+ public:
+  SelectDirection();
+  bool onRun(HandoverContext& ctx) override;
+
+ private:
+  int take_, give_;
+};
+
+/// Final state, never done: holds the TCP where it is, tracking off, and
+/// publishes the outcome. Keys: outcome: success | aborted | failed.
+class Rest : public HandoverState {
+ public:
+  Rest();
+  void configure(const YamlReader& def) override;
+  void onStart(HandoverContext& ctx) override;
+  bool onRun(HandoverContext& ctx) override;
+
+ private:
+  const char* outcome_ = "aborted";
+};
+
+/// [Stowed] Carries the TCP to a named pose (stow | safe | ready), tracking
+/// off, observation none. Keys: pose, position_tolerance (m),
+/// orientation_tolerance_deg, settle_speed (m/s).
+class Retract : public HandoverState {
+ public:
+  Retract();
+  void configure(const YamlReader& def) override;
+  void onStart(HandoverContext& ctx) override;
+  bool onRun(HandoverContext& ctx) override;
+
+ private:
+  int stowed_;
+  std::string pose_ = "stow";
+  double pos_tol_ = 0.02, rot_tol_ = 0.1, settle_speed_ = 0.02;
+};
+
+/// [Retry, GiveUp] After an abort: counts it, goes to the safe pose, then
+/// retries while params.max_retries allows. Keys: gripper: keep | open
+/// (keep never drops a held object; open lets the person keep theirs),
+/// position_tolerance (m), settle_speed (m/s).
+class Retreat : public HandoverState {
+ public:
+  Retreat();
+  void configure(const YamlReader& def) override;
+  void onStart(HandoverContext& ctx) override;
+  bool onRun(HandoverContext& ctx) override;
+
+ private:
+  int retry_, give_up_;
+  bool open_ = false;
+  double pos_tol_ = 0.03, settle_speed_ = 0.03;
+};
+
+}  // namespace handover::fsm

@@ -1,0 +1,88 @@
+// "A state removes from the QP what it added." Every controller call of a
+// state goes through its ControllerHandle. The shared CommandLedger knows the
+// current value of each scoped channel; the first time a state changes a
+// channel, its handle saves the value it found, and undo() (called from
+// teardown, whatever ended the state) puts exactly the touched channels back.
+// Nested states therefore restore their parent's settings.
+//
+// Scoped channels: observation target, tracking on/off, tracking offset, pose
+// target, posture target, speed scale. Persistent commands (gripper, payload)
+// pass straight through and are never undone: a state's end must not open
+// the hand on a held object.
+// Real-time: every method is RT safe (fixed-size storage).
+#pragma once
+
+#include <cstdint>
+
+#include "fsm/handover/controller_interface.hpp"
+
+namespace handover::fsm {
+
+/// Values of the scoped channels.
+struct ScopedCommands {
+  ObservationTarget observation = ObservationTarget::kNone;
+  bool tracking = false;
+  Isometry tracking_offset = Isometry::Identity();
+  bool pose_active = false;
+  Isometry pose = Isometry::Identity();
+  bool posture_active = false;
+  Vector7 posture = Vector7::Zero();
+  double speed_scale = 1.0;
+};
+
+enum class Channel : std::uint8_t { kObservation, kTracking, kTrackingOffset, kPose, kPosture, kSpeedScale };
+
+/// The controller as seen by all states, with the current scoped values.
+class CommandLedger {
+ public:
+  explicit CommandLedger(ControllerInterface& controller) : controller_(controller) {}
+  const ScopedCommands& current() const { return current_; }
+  /// Writes `value`'s channel `c` to the controller and records it.
+  void apply(Channel c, const ScopedCommands& value);
+  ControllerInterface& controller() { return controller_; }
+  // persistent state, for queries (e.g. "is a payload set")
+  double gripperWidth() const { return gripper_width_; }
+  bool payloadSet() const { return payload_set_; }
+  void setGripper(double width, double force);
+  void setPayload(double mass, const Vector3& com);
+  void clearPayload();
+
+ private:
+  ControllerInterface& controller_;
+  ScopedCommands current_;
+  double gripper_width_ = -1.0;  ///< -1 = never commanded
+  bool payload_set_ = false;
+};
+
+class ControllerHandle {
+ public:
+  void bind(CommandLedger* ledger) { ledger_ = ledger; }
+  bool bound() const { return ledger_ != nullptr; }
+
+  void setObservationTarget(ObservationTarget target);
+  void enableTracking(bool on);
+  void setTrackingOffset(const Isometry& target_in_observed);
+  void setPoseTarget(const Isometry& tcp_in_world);
+  void clearPoseTarget();
+  void setPostureTarget(const Vector7& q);
+  void clearPostureTarget();
+  void setSpeedScale(double scale);
+
+  void setGripper(double width, double force) { ledger_->setGripper(width, force); }
+  void setPayload(double mass, const Vector3& com) { ledger_->setPayload(mass, com); }
+  void clearPayload() { ledger_->clearPayload(); }
+
+  /// Restores every channel this handle changed since the last undo().
+  void undo();
+  bool touched(Channel c) const { return (touched_ >> static_cast<int>(c)) & 1u; }
+  const CommandLedger& ledger() const { return *ledger_; }
+
+ private:
+  /// Saves the ledger's value of `c` on first touch, then applies `next`.
+  void change(Channel c, const ScopedCommands& next);
+  CommandLedger* ledger_ = nullptr;
+  ScopedCommands saved_;
+  std::uint32_t touched_ = 0;
+};
+
+}  // namespace handover::fsm

@@ -1,0 +1,138 @@
+#include "fsm/handover/h2r_states.hpp"
+
+#include <cmath>
+
+#include "fsm/handover/perception_checks.hpp"
+#include "fsm/handover/tracking_setup.hpp"
+
+namespace handover::fsm {
+
+WaitForPerson::WaitForPerson(bool hand)
+    : hand_(hand), out_(declareOutput(hand ? "ReceiverComing" : "Offered")) {}
+
+void WaitForPerson::configure(const YamlReader& def) {
+  approach_speed_ = readPositive(def, "approach_speed", 5.0);
+  settle_speed_ = readPositive(def, "settle_speed", 5.0);
+  settle_time_ = readRange(def, "settle_time", 0.0, 10.0);
+}
+
+void WaitForPerson::onStart(HandoverContext& ctx) {
+  settled_since_ = -1.0;
+  ctrl().enableTracking(false);
+  ctrl().setObservationTarget(hand_ ? ObservationTarget::kHand : ObservationTarget::kObject);
+  ctrl().setPoseTarget(ctx.in.tcp_pose);  // at rest while waiting
+}
+
+bool WaitForPerson::onRun(HandoverContext& ctx) {
+  const HandoverParams& p = *ctx.params;
+  const SensedBody& body = hand_ ? ctx.in.hand : ctx.in.object;
+  const Vector3 pos = body.pose.translation();
+  const bool usable = fresh(body, p.max_data_age) && p.workspace.contains(pos) && (!hand_ || ctx.in.hand_open);
+  if (!usable) {
+    settled_since_ = -1.0;
+    return false;
+  }
+  bool ready = speedToward(p.workspace.center, body) > approach_speed_;
+  const bool resting = (pos - p.workspace.center).norm() <= p.reach_radius &&
+                       body.velocity.head<3>().norm() < settle_speed_;
+  if (!resting) {
+    settled_since_ = -1.0;
+  } else {
+    if (settled_since_ < 0.0) settled_since_ = ctx.time;
+    ready = ready || ctx.time - settled_since_ >= settle_time_;
+  }
+  if (ready) setOutput(out_);
+  return ready;
+}
+
+Approach::Approach(bool hand)
+    : hand_(hand), near_(declareOutput("Near")), withdrawn_(declareOutput("Withdrawn")) {}
+
+void Approach::configure(const YamlReader& def) { near_distance_ = readPositive(def, "near_distance", 1.0); }
+
+void Approach::onStart(HandoverContext& ctx) {
+  trackTarget(ctx, ctrl(), hand_);
+  if (!hand_) ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
+}
+
+bool Approach::onRun(HandoverContext& ctx) {
+  if (withdrawn(ctx, hand_ ? ctx.in.hand : ctx.in.object)) {
+    setOutput(withdrawn_);
+    return true;
+  }
+  if (positionError(ctx.in.tcp_pose, ctx.in.target_pose) <= near_distance_) {
+    setOutput(near_);
+    return true;
+  }
+  return false;
+}
+
+Grasp::Grasp()
+    : grasped_(declareOutput("Grasped")), missed_(declareOutput("Missed")), withdrawn_(declareOutput("Withdrawn")) {}
+
+void Grasp::configure(const YamlReader& def) {
+  pos_tol_ = readPositive(def, "position_tolerance", 0.2);
+  rot_tol_ = readPositive(def, "orientation_tolerance_deg", 180.0) * M_PI / 180.0;
+  speed_tol_ = readPositive(def, "speed_tolerance", 2.0);
+  confirm_time_ = readRange(def, "confirm_time", 0.0, 5.0);
+  stall_speed_ = readPositive(def, "stall_speed", 1.0);
+  min_width_ = readRange(def, "min_width", 0.0, 0.08);
+}
+
+void Grasp::onStart(HandoverContext& ctx) {
+  closing_ = false;
+  trackTarget(ctx, ctrl(), false);
+}
+
+bool Grasp::onRun(HandoverContext& ctx) {
+  if (!closing_) {
+    if (withdrawn(ctx, ctx.in.object)) {
+      setOutput(withdrawn_);
+      return true;
+    }
+    if (!alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_)) return false;
+    ctx.force_before_grasp = ctx.force;  // reference for the release test
+    ctrl().setGripper(ctx.params->gripper_close_width, ctx.params->gripper_force);
+    closing_ = true;
+    closed_at_ = last_time_ = ctx.time;
+    last_width_ = ctx.in.finger_width;
+    finger_speed_ = 1e9;
+    return false;
+  }
+  // finger speed over >= 10 ms windows: robust to quantised width readings
+  if (ctx.time - last_time_ >= 0.01) {
+    finger_speed_ = std::abs(ctx.in.finger_width - last_width_) / (ctx.time - last_time_);
+    last_width_ = ctx.in.finger_width;
+    last_time_ = ctx.time;
+  }
+  if (ctx.time - closed_at_ < confirm_time_ || finger_speed_ > stall_speed_) return false;
+  setOutput(ctx.in.finger_width > min_width_ ? grasped_ : missed_);
+  return true;
+}
+
+WaitForRelease::WaitForRelease() : released_(declareOutput("Released")) {}
+
+void WaitForRelease::configure(const YamlReader& def) {
+  fraction_ = readPositive(def, "release_fraction", 2.0);
+  hold_time_ = readRange(def, "hold_time", 0.0, 5.0);
+}
+
+void WaitForRelease::onStart(HandoverContext& ctx) {
+  since_ = -1.0;
+  trackTarget(ctx, ctrl(), false);  // follow the object while the person still holds it
+}
+
+bool WaitForRelease::onRun(HandoverContext& ctx) {
+  const double weight = ctx.object.mass * ctx.params->gravity;
+  if (ctx.addedWeight(ctx.force_before_grasp) < fraction_ * weight) {
+    since_ = -1.0;
+    return false;
+  }
+  if (since_ < 0.0) since_ = ctx.time;
+  if (ctx.time - since_ < hold_time_) return false;
+  ctrl().setPayload(ctx.object.mass, ctx.object.com_in_tcp);
+  setOutput(released_);
+  return true;
+}
+
+}  // namespace handover::fsm

@@ -1,0 +1,85 @@
+// Human to robot: the person offers the object, the robot takes it.
+#pragma once
+
+#include "fsm/handover/handover_state.hpp"
+
+namespace handover::fsm {
+
+/// [Offered] (WaitForOffer) / [ReceiverComing] (WaitForReceiver). Holds the
+/// TCP still and observes the object (or hand) until it is inside the
+/// workspace and either comes toward the robot faster than approach_speed,
+/// or rests (speed < settle_speed for settle_time) within params.reach_radius.
+/// WaitForReceiver also needs HandoverInput::hand_open.
+/// Keys: approach_speed, settle_speed (m/s), settle_time (s).
+class WaitForPerson : public HandoverState {
+ public:
+  explicit WaitForPerson(bool hand);
+  void configure(const YamlReader& def) override;
+  void onStart(HandoverContext& ctx) override;
+  bool onRun(HandoverContext& ctx) override;
+
+ private:
+  bool hand_;
+  int out_;
+  double approach_speed_ = 0.1, settle_speed_ = 0.05, settle_time_ = 0.3;
+  double settled_since_ = -1.0;
+};
+
+/// [Near, Withdrawn] Observation on the object (or hand), tracking the grasp
+/// (or presentation) frame. The object approach opens the gripper.
+/// Keys: near_distance (m, TCP to target frame).
+class Approach : public HandoverState {
+ public:
+  explicit Approach(bool hand);
+  void configure(const YamlReader& def) override;
+  void onStart(HandoverContext& ctx) override;
+  bool onRun(HandoverContext& ctx) override;
+
+ private:
+  bool hand_;
+  int near_, withdrawn_;
+  double near_distance_ = 0.1;
+};
+
+/// [Grasped, Missed, Withdrawn] Keeps tracking the grasp frame; closes when
+/// position, orientation and relative speed errors are within tolerance
+/// (recording the force before the grasp). Once closing for at least
+/// confirm_time and the fingers have stopped (slower than stall_speed), the
+/// grasp is confirmed by a finger width above min_width (not closed on
+/// nothing), else missed.
+/// Keys: position_tolerance (m), orientation_tolerance_deg, speed_tolerance
+/// (m/s), confirm_time (s), stall_speed (m/s), min_width (m).
+class Grasp : public HandoverState {
+ public:
+  Grasp();
+  void configure(const YamlReader& def) override;
+  void onStart(HandoverContext& ctx) override;
+  bool onRun(HandoverContext& ctx) override;
+
+ private:
+  int grasped_, missed_, withdrawn_;
+  double pos_tol_ = 0.01, rot_tol_ = 0.17, speed_tol_ = 0.05, confirm_time_ = 0.3, min_width_ = 0.005;
+  double stall_speed_ = 0.01;
+  bool closing_ = false;
+  double closed_at_ = 0.0;
+  double last_width_ = 0.0, last_time_ = 0.0, finger_speed_ = 0.0;
+};
+
+/// [Released] Follows the grasp frame until the person lets go: the filtered
+/// world force has gained at least release_fraction * m g along gravity since
+/// the grasp, for hold_time; then sets the payload.
+/// Keys: release_fraction (0..2), hold_time (s).
+class WaitForRelease : public HandoverState {
+ public:
+  WaitForRelease();
+  void configure(const YamlReader& def) override;
+  void onStart(HandoverContext& ctx) override;
+  bool onRun(HandoverContext& ctx) override;
+
+ private:
+  int released_;
+  double fraction_ = 0.7, hold_time_ = 0.1;
+  double since_ = -1.0;
+};
+
+}  // namespace handover::fsm

@@ -1,0 +1,130 @@
+#include "fsm/handover/handover_fsm.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+
+#include "fsm/handover/common_states.hpp"
+#include "fsm/handover/h2r_states.hpp"
+#include "fsm/handover/r2h_states.hpp"
+#include "fsm/handover/safety.hpp"
+
+namespace handover::fsm {
+
+void registerHandoverTypes(Registry& r) {
+  r.addState<SelectDirection>("SelectDirection");
+  r.addState<Rest>("Rest");
+  r.addState<Retract>("Retract");
+  r.addState<Retreat>("Retreat");
+  r.addState("WaitForOffer", [] { return std::unique_ptr<State>(new WaitForPerson(false)); });
+  r.addState("WaitForReceiver", [] { return std::unique_ptr<State>(new WaitForPerson(true)); });
+  r.addState("ApproachObject", [] { return std::unique_ptr<State>(new Approach(false)); });
+  r.addState("ApproachHand", [] { return std::unique_ptr<State>(new Approach(true)); });
+  r.addState<Grasp>("Grasp");
+  r.addState<WaitForRelease>("WaitForRelease");
+  r.addState<HoldReady>("HoldReady");
+  r.addState<Present>("Present");
+  r.addState<DetectPull>("DetectPull");
+  r.addState<Release>("Release");
+  r.addState<ConfirmGone>("ConfirmGone");
+  r.addState<SafetyStop>("SafetyStop");
+  r.addState<SlowDown>("SlowDown");
+  r.addCondition<HumanTooClose>("HumanTooClose");
+}
+
+namespace {
+bool finite(const Isometry& T) { return T.matrix().allFinite(); }
+bool finite(const SensedBody& b) { return finite(b.pose) && b.velocity.allFinite() && std::isfinite(b.age); }
+}  // namespace
+
+HandoverFsm::HandoverFsm(const YamlReader& root, ControllerInterface& controller, const ObjectInfo& object)
+    : ledger_(controller) {
+  if (!root.isMap()) root.fail("expected a map with 'params' and 'machine'");
+  if (!(object.mass > 0.0) || !std::isfinite(object.mass)) {
+    throw InputError(root.file() + ": object mass must be > 0 kg, got " + std::to_string(object.mass));
+  }
+  params_ = loadHandoverParams(root.child("params"));
+  registerHandoverTypes(registry_);
+  machine_ = std::make_unique<StateMachine>(root.child("machine"), registry_);
+  root.finish();
+  ctx_.params = &params_;
+  ctx_.ledger = &ledger_;
+  ctx_.object = object;
+}
+
+std::unique_ptr<HandoverFsm> HandoverFsm::fromFile(const std::string& path, ControllerInterface& controller,
+                                                   const ObjectInfo& object) {
+  return std::make_unique<HandoverFsm>(YamlReader::loadFile(path), controller, object);
+}
+
+std::string HandoverFsm::defaultConfigPath() { return std::string(HANDOVER_SOURCE_DIR) + "/config/fsm.yaml"; }
+
+bool HandoverFsm::done() const { return std::string_view(ctx_.stats.outcome) != "running"; }
+
+void HandoverFsm::sanitise(const HandoverInput& in) {
+  const HandoverInput previous = ctx_.in;
+  ctx_.in = in;
+  bool bad = false;
+  if (!std::isfinite(in.time)) {
+    ctx_.in.time = last_time_;
+    bad = true;
+  }
+  // arm state the controller reports: keep the last good value
+  if (!finite(in.tcp_pose) || !in.tcp_velocity.allFinite() || !in.q.allFinite() || !in.qd.allFinite()) {
+    ctx_.in.tcp_pose = previous.tcp_pose;
+    ctx_.in.tcp_velocity = previous.tcp_velocity;
+    ctx_.in.q = previous.q;
+    ctx_.in.qd = previous.qd;
+    bad = true;
+  }
+  if (!std::isfinite(in.finger_width)) {
+    ctx_.in.finger_width = previous.finger_width;
+    bad = true;
+  }
+  // perception: a non-finite sample is no sample
+  if (!finite(in.hand)) {
+    ctx_.in.hand = previous.hand;
+    ctx_.in.hand.valid = false;
+    bad = true;
+  }
+  if (!finite(in.object)) {
+    ctx_.in.object = previous.object;
+    ctx_.in.object.valid = false;
+    bad = true;
+  }
+  if (std::isnan(in.human_distance)) {
+    ctx_.in.human_distance = 0.0;  // unknown distance: assume the worst
+    bad = true;
+  }
+  if (!finite(in.target_pose) || !in.target_velocity.allFinite()) {
+    ctx_.in.target_pose = previous.target_pose;
+    ctx_.in.target_velocity = previous.target_velocity;
+    bad = true;
+  }
+  // wrist force: low-pass in world axes; skip non-finite samples
+  const Vector3 f = in.ft_rotation * in.wrench.head<3>();
+  if (f.allFinite()) {
+    const double dt = ctx_.force_valid ? std::max(0.0, ctx_.in.time - last_time_) : 0.0;
+    const double tau = params_.ft_filter_tau;
+    if (!ctx_.force_valid || tau <= 0.0) {
+      ctx_.force = f;
+      ctx_.force_valid = true;
+    } else {
+      ctx_.force += (dt / (tau + dt)) * (f - ctx_.force);
+    }
+  } else {
+    bad = true;
+  }
+  if (bad) ++ctx_.stats.bad_input_cycles;
+  last_time_ = ctx_.in.time;
+}
+
+void HandoverFsm::step(const HandoverInput& input) {
+  sanitise(input);
+  ctx_.time = ctx_.in.time;
+  machine_->step(ctx_);
+}
+
+void HandoverFsm::stop() { machine_->stop(ctx_); }
+
+}  // namespace handover::fsm

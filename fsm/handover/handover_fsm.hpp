@@ -1,0 +1,61 @@
+// The handover behaviour: loads config/fsm.yaml (shared `params` and the
+// `machine`), owns the state machine, the controller ledger and the context,
+// and is stepped once per control cycle with the cycle's inputs.
+//
+//   auto fsm = HandoverFsm::fromFile(HandoverFsm::defaultConfigPath(), controller, object);
+//   every 1 ms: fsm->step(input);   log fsm->activePath(); read fsm->stats()
+//
+// Construction is not RT safe; step(), activePath() and stats() are.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fsm/core/registry.hpp"
+#include "fsm/core/state_machine.hpp"
+#include "fsm/handover/handover_context.hpp"
+
+namespace handover::fsm {
+
+/// Registers every handover state and condition type.
+void registerHandoverTypes(Registry& registry);
+
+class HandoverFsm {
+ public:
+  /// `root` has keys `params` and `machine`. The controller must outlive the
+  /// machine. Throws handover::InputError naming file, key and line.
+  HandoverFsm(const YamlReader& root, ControllerInterface& controller, const ObjectInfo& object);
+  static std::unique_ptr<HandoverFsm> fromFile(const std::string& path, ControllerInterface& controller,
+                                               const ObjectInfo& object);
+  /// config/fsm.yaml of the source tree.
+  static std::string defaultConfigPath();
+
+  /// One control cycle: sanitises the inputs (non-finite values are dropped
+  /// and counted), filters the wrist force, runs interrupts and states.
+  void step(const HandoverInput& input);
+  /// Tears down every active state (end of a run).
+  void stop();
+
+  /// Path of the deepest active state, e.g. "Handover/HumanToRobot/Approach".
+  const std::string& activePath() const { return machine_->activePath(); }
+  const HandoverStats& stats() const { return ctx_.stats; }
+  /// Outcome decided (a final Rest state was reached).
+  bool done() const;
+  const StateMachine& machine() const { return *machine_; }
+  const HandoverParams& params() const { return params_; }
+  const HandoverContext& context() const { return ctx_; }
+  /// Visited states, full paths in order (copies; not RT safe).
+  std::vector<std::string> visitedStates() const { return machine_->history().paths(); }
+
+ private:
+  void sanitise(const HandoverInput& input);
+  HandoverParams params_;
+  Registry registry_;
+  CommandLedger ledger_;
+  HandoverContext ctx_;
+  std::unique_ptr<StateMachine> machine_;
+  double last_time_ = 0.0;
+};
+
+}  // namespace handover::fsm

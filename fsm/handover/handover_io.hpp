@@ -1,0 +1,72 @@
+// Plain inputs of the handover state machine, filled once per control cycle
+// by the application (from the simulator or a robot driver, perception and
+// the controller). Frames: world (z up, base at origin) unless stated; SI
+// units; spatial velocities are [linear; angular] in world axes.
+#pragma once
+
+#include "fsm/handover/controller_interface.hpp"
+
+namespace handover::fsm {
+
+/// A body seen by perception (the person's hand or the object).
+struct SensedBody {
+  Isometry pose = Isometry::Identity();  ///< body frame in the world (hand: grip point)
+  Vector6 velocity = Vector6::Zero();    ///< estimated [linear (m/s); angular (rad/s)]
+  bool valid = false;                    ///< a sample has been received and is usable
+  double age = 1e9;                      ///< s since the last sample (stale data grows this)
+};
+
+struct HandoverInput {
+  double time = 0.0;  ///< s since the start of the run
+
+  // arm
+  Vector7 q = Vector7::Zero();              ///< joint positions, rad
+  Vector7 qd = Vector7::Zero();             ///< joint velocities, rad/s
+  Isometry tcp_pose = Isometry::Identity(); ///< tool centre point in the world
+  Vector6 tcp_velocity = Vector6::Zero();   ///< TCP [linear; angular], world axes
+  double finger_width = 0.0;                ///< total finger opening, m
+
+  /// Wrist F/T sensor [force (N); torque (N m)] in the sensor frame, as
+  /// sim::ArmState::wrench reports it.
+  Vector6 wrench = Vector6::Zero();
+  /// Rotation of the F/T sensor frame in the world (from the kinematics), so
+  /// the force can be compared with gravity.
+  Eigen::Matrix3d ft_rotation = Eigen::Matrix3d::Identity();
+
+  // perception
+  SensedBody hand;          ///< the person's hand (grip point frame, design notes 1)
+  SensedBody object;        ///< the object
+  bool hand_open = true;    ///< the hand is empty and open (ready to receive)
+  /// Smallest distance between the robot links and the person's arm and
+  /// hand, m (fingers excluded while they share the object). Large if unknown.
+  double human_distance = 1e9;
+
+  // controller feedback
+  ObservationTarget observed_target = ObservationTarget::kNone;  ///< what the observation follows now
+  Isometry observed_pose = Isometry::Identity();   ///< observed frame (virtual object)
+  Vector6 observed_velocity = Vector6::Zero();
+  /// The tracking target frame in the world (grasp frame or presentation
+  /// frame = observed pose * tracking offset) and its velocity.
+  Isometry target_pose = Isometry::Identity();
+  Vector6 target_velocity = Vector6::Zero();
+  bool holds_object = false;  ///< the controller believes the gripper holds the object
+};
+
+/// What the task knows about the object (from the scenario), set once.
+struct ObjectInfo {
+  double mass = 0.3;                          ///< kg
+  Vector3 com_in_tcp = Vector3::Zero();       ///< centre of mass in the TCP frame when grasped, m
+  Isometry grasp_in_object = Isometry::Identity();  ///< grasp frame in the object frame
+};
+
+/// Counters and the outcome, readable by the application every cycle.
+struct HandoverStats {
+  const char* outcome = "running";  ///< running | success | aborted | failed
+  int handovers = 0;                ///< completed handovers
+  int aborts = 0;                   ///< attempts abandoned (person withdrew, no release, no pull, ...)
+  int retries = 0;                  ///< times the robot went back to waiting after an abort
+  int safety_stops = 0;             ///< preemptions by the safety stop
+  int bad_input_cycles = 0;         ///< cycles with non-finite sensor values (ignored)
+};
+
+}  // namespace handover::fsm

@@ -1,0 +1,84 @@
+#include "fsm/handover/handover_params.hpp"
+
+namespace handover::fsm {
+
+bool Workspace::contains(const Vector3& p) const {
+  return (p - center).norm() <= radius && (p.array() >= box_min.array()).all() &&
+         (p.array() <= box_max.array()).all();
+}
+
+Isometry readPose(const YamlReader& node) {
+  if (!node.isMap()) node.fail("expected {pos: [x, y, z], rpy: [roll, pitch, yaw]}");
+  const Vector3 pos = node.child("pos").asVector(3);
+  Vector3 rpy = Vector3::Zero();
+  if (auto r = node.optionalChild("rpy")) rpy = r->asVector(3);
+  node.finish();
+  Isometry T = Isometry::Identity();
+  T.translation() = pos;
+  T.linear() = (Eigen::AngleAxisd(rpy.z(), Vector3::UnitZ()) * Eigen::AngleAxisd(rpy.y(), Vector3::UnitY()) *
+                Eigen::AngleAxisd(rpy.x(), Vector3::UnitX()))
+                   .toRotationMatrix();
+  return T;
+}
+
+namespace {
+double positive(const YamlReader& parent, const char* key, double hi) {
+  const YamlReader c = parent.child(key);
+  const double v = c.asDouble();
+  if (!(v > 0.0)) c.fail("must be > 0, got " + std::to_string(v));
+  return c.checkRange(v, 0.0, hi);
+}
+double inRange(const YamlReader& parent, const char* key, double lo, double hi) {
+  const YamlReader c = parent.child(key);
+  return c.checkRange(c.asDouble(), lo, hi);
+}
+}  // namespace
+
+HandoverParams loadHandoverParams(const YamlReader& n) {
+  if (!n.isMap()) n.fail("expected a map of handover parameters");
+  HandoverParams p;
+  const YamlReader ws = n.child("workspace");
+  p.workspace.center = ws.child("center").asVector(3);
+  p.workspace.radius = positive(ws, "radius", 2.0);
+  p.workspace.box_min = ws.child("box_min").asVector(3);
+  p.workspace.box_max = ws.child("box_max").asVector(3);
+  if (!(p.workspace.box_min.array() < p.workspace.box_max.array()).all()) {
+    ws.child("box_max").fail("box_max must exceed box_min on every axis");
+  }
+  ws.finish();
+  p.reach_radius = positive(n, "reach_radius", 2.0);
+  {
+    const YamlReader r = n.child("max_retries");
+    p.max_retries = static_cast<int>(r.checkRange(r.asInt(), 0, 100));
+  }
+  const YamlReader g = n.child("gripper");
+  p.gripper_open_width = inRange(g, "open_width", 0.0, 0.08);
+  p.gripper_close_width = inRange(g, "close_width", 0.0, 0.08);
+  if (p.gripper_close_width >= p.gripper_open_width) g.child("close_width").fail("must be below open_width");
+  p.gripper_force = positive(g, "force", 140.0);
+  g.finish();
+  const YamlReader ft = n.child("ft");
+  p.ft_filter_tau = inRange(ft, "filter_tau", 0.0, 1.0);
+  {
+    const YamlReader s = ft.child("gravity_sign");
+    p.ft_gravity_sign = s.asDouble();
+    if (p.ft_gravity_sign != 1.0 && p.ft_gravity_sign != -1.0) s.fail("must be -1 or 1");
+  }
+  p.gravity = positive(ft, "gravity", 20.0);
+  ft.finish();
+  const YamlReader w = n.child("withdraw");
+  p.max_data_age = positive(w, "max_data_age", 5.0);
+  p.stale_timeout = positive(w, "stale_timeout", 10.0);
+  p.withdraw_speed = positive(w, "speed", 5.0);
+  w.finish();
+  const YamlReader poses = n.child("poses");
+  p.stow_pose = readPose(poses.child("stow"));
+  p.safe_pose = readPose(poses.child("safe"));
+  p.ready_pose = readPose(poses.child("ready"));
+  poses.finish();
+  p.object_in_hand = readPose(n.child("object_in_hand"));
+  n.finish();
+  return p;
+}
+
+}  // namespace handover::fsm

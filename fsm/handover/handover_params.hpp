@@ -1,0 +1,52 @@
+// Settings shared by the handover states (`params:` in config/fsm.yaml).
+// Thresholds that belong to one state live in that state's definition.
+// Loaded and validated at start-up (not RT safe); read-only afterwards.
+#pragma once
+
+#include "config/yaml_reader.hpp"
+#include "fsm/handover/controller_interface.hpp"
+
+namespace handover::fsm {
+
+/// Where the robot may meet the person: inside a sphere AND a box (world).
+struct Workspace {
+  Vector3 center = Vector3(0.0, 0.0, 0.333);  ///< m, sphere centre (near the shoulder joint)
+  double radius = 0.85;                        ///< m
+  Vector3 box_min = Vector3(0.15, -0.6, -0.1); ///< m
+  Vector3 box_max = Vector3(1.0, 0.6, 0.9);    ///< m
+  bool contains(const Vector3& p) const;
+};
+
+struct HandoverParams {
+  Workspace workspace;
+  double reach_radius = 0.75;        ///< m from workspace.center: a settled object/hand closer is "within reach"
+  int max_retries = 2;               ///< retries after an abort before giving up
+  // gripper
+  double gripper_open_width = 0.08;  ///< m, commanded opening
+  double gripper_close_width = 0.0;  ///< m, commanded when grasping (the object stops the fingers)
+  double gripper_force = 40.0;       ///< N
+  // wrist force-torque sensor
+  double ft_filter_tau = 0.05;       ///< s, low-pass time constant of the world-frame force
+  /// Change of the world z force reading per unit of hanging weight: -1 when
+  /// a held mass m lowers the reading by m g (force the hand exerts on the
+  /// flange, as the simulator reports), +1 for the opposite convention.
+  double ft_gravity_sign = -1.0;
+  double gravity = 9.81;             ///< m/s^2
+  // perception and withdrawal
+  double max_data_age = 0.1;         ///< s, older samples are not used to start an approach
+  double stale_timeout = 0.5;        ///< s without a sample during an approach = the person withdrew
+  double withdraw_speed = 0.3;       ///< m/s away from workspace.center = the person withdrew
+  // poses (TCP in the world)
+  Isometry stow_pose = Isometry::Identity();   ///< where a taken object is carried
+  Isometry safe_pose = Isometry::Identity();   ///< where the robot retreats after an abort
+  Isometry ready_pose = Isometry::Identity();  ///< where an object to give is held
+  /// Desired object pose in the person's hand frame when presenting.
+  Isometry object_in_hand = Isometry::Identity();
+};
+
+/// Reads and validates `params`; throws InputError naming file, key, line.
+HandoverParams loadHandoverParams(const YamlReader& params);
+/// {pos: [x, y, z], rpy: [r, p, y]} (m, rad) to a pose.
+Isometry readPose(const YamlReader& node);
+
+}  // namespace handover::fsm

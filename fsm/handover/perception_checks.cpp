@@ -1,0 +1,36 @@
+#include "fsm/handover/perception_checks.hpp"
+
+namespace handover::fsm {
+
+double speedToward(const Vector3& center, const SensedBody& body) {
+  const Vector3 d = center - body.pose.translation();
+  const double n = d.norm();
+  if (n < 1e-9) return 0.0;
+  return body.velocity.head<3>().dot(d / n);
+}
+
+bool fresh(const SensedBody& body, double max_age) { return body.valid && body.age <= max_age; }
+
+bool withdrawn(const HandoverContext& ctx, const SensedBody& body) {
+  const HandoverParams& p = *ctx.params;
+  if (body.age > p.stale_timeout) return true;
+  if (!body.valid) return false;  // a short dropout: keep the last decision
+  if (!p.workspace.contains(body.pose.translation())) return true;
+  return -speedToward(p.workspace.center, body) > p.withdraw_speed;
+}
+
+double positionError(const Isometry& a, const Isometry& b) {
+  return (a.translation() - b.translation()).norm();
+}
+
+double rotationError(const Isometry& a, const Isometry& b) {
+  return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
+}
+
+bool alignedWithTarget(const HandoverInput& in, double pos_tol, double rot_tol, double speed_tol) {
+  const double speed = (in.tcp_velocity.head<3>() - in.target_velocity.head<3>()).norm();
+  return positionError(in.tcp_pose, in.target_pose) <= pos_tol &&
+         rotationError(in.tcp_pose, in.target_pose) <= rot_tol && speed <= speed_tol;
+}
+
+}  // namespace handover::fsm

@@ -1,0 +1,133 @@
+#include "fsm/handover/r2h_states.hpp"
+
+#include <cmath>
+
+#include "fsm/handover/perception_checks.hpp"
+#include "fsm/handover/tracking_setup.hpp"
+
+namespace handover::fsm {
+
+HoldReady::HoldReady() : ready_(declareOutput("Ready")) {}
+
+void HoldReady::configure(const YamlReader& def) {
+  pos_tol_ = readPositive(def, "position_tolerance", 0.5);
+  settle_speed_ = readPositive(def, "settle_speed", 1.0);
+}
+
+void HoldReady::onStart(HandoverContext& ctx) {
+  const HandoverParams& p = *ctx.params;
+  ctrl().setGripper(p.gripper_close_width, p.gripper_force);  // keep the grip
+  if (!ctx.ledger->payloadSet()) ctrl().setPayload(ctx.object.mass, ctx.object.com_in_tcp);
+  ctrl().enableTracking(false);
+  ctrl().setObservationTarget(ObservationTarget::kHand);
+  ctrl().setPoseTarget(p.ready_pose);
+}
+
+bool HoldReady::onRun(HandoverContext& ctx) {
+  if (positionError(ctx.in.tcp_pose, ctx.params->ready_pose) > pos_tol_ ||
+      ctx.in.tcp_velocity.head<3>().norm() > settle_speed_) {
+    return false;
+  }
+  setOutput(ready_);
+  return true;
+}
+
+Present::Present() : presented_(declareOutput("Presented")), withdrawn_(declareOutput("Withdrawn")) {}
+
+void Present::configure(const YamlReader& def) {
+  pos_tol_ = readPositive(def, "position_tolerance", 0.2);
+  rot_tol_ = readPositive(def, "orientation_tolerance_deg", 180.0) * M_PI / 180.0;
+  speed_tol_ = readPositive(def, "speed_tolerance", 2.0);
+  settle_time_ = readRange(def, "settle_time", 0.0, 5.0);
+}
+
+void Present::onStart(HandoverContext& ctx) {
+  since_ = -1.0;
+  trackTarget(ctx, ctrl(), true);
+}
+
+bool Present::onRun(HandoverContext& ctx) {
+  if (withdrawn(ctx, ctx.in.hand)) {
+    setOutput(withdrawn_);
+    return true;
+  }
+  if (!alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_)) {
+    since_ = -1.0;
+    return false;
+  }
+  if (since_ < 0.0) since_ = ctx.time;
+  if (ctx.time - since_ < settle_time_) return false;
+  setOutput(presented_);
+  return true;
+}
+
+DetectPull::DetectPull() : pulled_(declareOutput("Pulled")) {}
+
+void DetectPull::configure(const YamlReader& def) {
+  threshold_ = readPositive(def, "pull_threshold", 100.0);
+  hold_time_ = readRange(def, "hold_time", 0.0, 5.0);
+}
+
+void DetectPull::onStart(HandoverContext& ctx) {
+  since_ = -1.0;
+  ctx.force_holding = ctx.force;  // removes the object's (and hand's) weight from the test
+  ctrl().enableTracking(false);
+  ctrl().setPoseTarget(ctx.in.tcp_pose);  // hold still so a pull builds force
+}
+
+bool DetectPull::onRun(HandoverContext& ctx) {
+  if ((ctx.force - ctx.force_holding).norm() <= threshold_) {
+    since_ = -1.0;
+    return false;
+  }
+  if (since_ < 0.0) since_ = ctx.time;
+  if (ctx.time - since_ < hold_time_) return false;
+  setOutput(pulled_);
+  return true;
+}
+
+Release::Release() : opened_(declareOutput("Opened")) {}
+
+void Release::configure(const YamlReader& def) { min_width_ = readRange(def, "min_width", 0.0, 0.08); }
+
+void Release::onStart(HandoverContext& ctx) {
+  ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
+  ctrl().enableTracking(false);
+  ctrl().setPoseTarget(ctx.in.tcp_pose);
+}
+
+bool Release::onRun(HandoverContext& ctx) {
+  if (ctx.in.finger_width < min_width_) return false;
+  setOutput(opened_);
+  return true;
+}
+
+ConfirmGone::ConfirmGone() : gone_(declareOutput("Gone")) {}
+
+void ConfirmGone::configure(const YamlReader& def) {
+  min_width_ = readRange(def, "min_width", 0.0, 0.08);
+  fraction_ = readPositive(def, "gone_fraction", 2.0);
+  hold_time_ = readRange(def, "hold_time", 0.0, 5.0);
+}
+
+void ConfirmGone::onStart(HandoverContext& ctx) {
+  since_ = -1.0;
+  ctrl().enableTracking(false);
+  ctrl().setPoseTarget(ctx.in.tcp_pose);
+}
+
+bool ConfirmGone::onRun(HandoverContext& ctx) {
+  const double weight = ctx.object.mass * ctx.params->gravity;
+  const double removed = -ctx.addedWeight(ctx.force_holding);
+  if (ctx.in.finger_width < min_width_ || removed < fraction_ * weight) {
+    since_ = -1.0;
+    return false;
+  }
+  if (since_ < 0.0) since_ = ctx.time;
+  if (ctx.time - since_ < hold_time_) return false;
+  ctrl().clearPayload();
+  setOutput(gone_);
+  return true;
+}
+
+}  // namespace handover::fsm

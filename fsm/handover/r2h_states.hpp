@@ -1,0 +1,88 @@
+// Robot to human: the robot presents the object, the person takes it.
+#pragma once
+
+#include "fsm/handover/handover_state.hpp"
+
+namespace handover::fsm {
+
+/// [Ready] Keeps the object gripped (closes, sets the payload) and moves to
+/// params.ready_pose while observing the hand.
+/// Keys: position_tolerance (m), settle_speed (m/s).
+class HoldReady : public HandoverState {
+ public:
+  HoldReady();
+  void configure(const YamlReader& def) override;
+  void onStart(HandoverContext& ctx) override;
+  bool onRun(HandoverContext& ctx) override;
+
+ private:
+  int ready_;
+  double pos_tol_ = 0.03, settle_speed_ = 0.03;
+};
+
+/// [Presented, Withdrawn] Tracks the presentation frame (still relative to
+/// the hand) until position, orientation and relative speed errors stay within
+/// tolerance for settle_time. Keys: position_tolerance (m),
+/// orientation_tolerance_deg, speed_tolerance (m/s), settle_time (s).
+class Present : public HandoverState {
+ public:
+  Present();
+  void configure(const YamlReader& def) override;
+  void onStart(HandoverContext& ctx) override;
+  bool onRun(HandoverContext& ctx) override;
+
+ private:
+  int presented_, withdrawn_;
+  double pos_tol_ = 0.02, rot_tol_ = 0.2, speed_tol_ = 0.05, settle_time_ = 0.2;
+  double since_ = -1.0;
+};
+
+/// [Pulled] Holds the TCP still and records the filtered force (object and
+/// hand weight included); pulled when the filtered force differs from it by
+/// more than pull_threshold for hold_time. Set a `timeout` for "no pull".
+/// Keys: pull_threshold (N), hold_time (s).
+class DetectPull : public HandoverState {
+ public:
+  DetectPull();
+  void configure(const YamlReader& def) override;
+  void onStart(HandoverContext& ctx) override;
+  bool onRun(HandoverContext& ctx) override;
+
+ private:
+  int pulled_;
+  double threshold_ = 3.0, hold_time_ = 0.05;
+  double since_ = -1.0;
+};
+
+/// [Opened] Opens the gripper, holding the TCP; done when the fingers are
+/// open wider than min_width. Keys: min_width (m).
+class Release : public HandoverState {
+ public:
+  Release();
+  void configure(const YamlReader& def) override;
+  void onStart(HandoverContext& ctx) override;
+  bool onRun(HandoverContext& ctx) override;
+
+ private:
+  int opened_;
+  double min_width_ = 0.07;
+};
+
+/// [Gone] Fingers open wider than min_width and at least gone_fraction of
+/// the object's weight left the sensor (relative to the force recorded by
+/// DetectPull) for hold_time; then clears the payload.
+/// Keys: min_width (m), gone_fraction, hold_time (s).
+class ConfirmGone : public HandoverState {
+ public:
+  ConfirmGone();
+  void configure(const YamlReader& def) override;
+  void onStart(HandoverContext& ctx) override;
+  bool onRun(HandoverContext& ctx) override;
+
+ private:
+  int gone_;
+  double min_width_ = 0.07, fraction_ = 0.7, hold_time_ = 0.1;
+  double since_ = -1.0;
+};
+
+}  // namespace handover::fsm

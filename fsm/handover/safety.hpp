@@ -1,0 +1,50 @@
+// The safety layer of the handover machine (used as interrupts).
+#pragma once
+
+#include "fsm/core/condition.hpp"
+#include "fsm/handover/handover_state.hpp"
+
+namespace handover::fsm {
+
+/// Holds while the person is closer to the robot than `distance` (m,
+/// HandoverInput::human_distance) and the hand is not in the grasp zone
+/// (within grasp_zone_radius of the TCP), where closeness is the point.
+class HumanTooClose : public Condition {
+ public:
+  void configure(const YamlReader& def) override;
+  bool evaluate(Context& ctx) override;
+
+ private:
+  double distance_ = 0.1, grasp_zone_ = 0.15;
+};
+
+/// [Clear] Preempting stop: tracking off, TCP held where it is, until the
+/// person is farther than clear_distance for clear_time. Counts the stop.
+/// The gripper is not touched. Keys: clear_distance (m), clear_time (s).
+class SafetyStop : public HandoverState {
+ public:
+  SafetyStop();
+  void configure(const YamlReader& def) override;
+  void onStart(HandoverContext& ctx) override;
+  bool onRun(HandoverContext& ctx) override;
+
+ private:
+  int clear_;
+  double clear_distance_ = 0.2, clear_time_ = 0.5;
+  double since_ = -1.0;
+};
+
+/// Overlay: scales the controller's speed while active; its teardown puts
+/// the previous scale back. Keys: speed_scale (0..1).
+class SlowDown : public HandoverState {
+ public:
+  SlowDown();
+  void configure(const YamlReader& def) override;
+  void onStart(HandoverContext& ctx) override;
+  bool onRun(HandoverContext& ctx) override;
+
+ private:
+  double scale_ = 0.3;
+};
+
+}  // namespace handover::fsm

@@ -1,0 +1,268 @@
+// Synthetic inputs for the handover machine: a recording fake controller and
+// a kinematic toy world (no physics) in which the TCP moves toward what the
+// controller was last told, the gripper closes on the object when it is
+// between the fingers, the wrist force shows the object's weight when the
+// robot alone carries it, and the person's hand is scripted by the test.
+#pragma once
+
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "fsm/handover/handover_fsm.hpp"
+
+namespace handover::fsm::test {
+
+struct RecordingController : ControllerInterface {
+  std::vector<std::string> calls;
+  ObservationTarget observation = ObservationTarget::kNone;
+  bool tracking = false;
+  Isometry offset = Isometry::Identity();
+  bool pose_active = false;
+  Isometry pose = Isometry::Identity();
+  bool posture_active = false;
+  double speed = 1.0;
+  double gripper_width = 0.08;
+  bool payload = false;
+
+  static std::string num(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.2f", v);
+    return b;
+  }
+  void setObservationTarget(ObservationTarget t) override {
+    observation = t;
+    calls.push_back(std::string("observe ") + toString(t));
+  }
+  void enableTracking(bool on) override {
+    tracking = on;
+    calls.push_back(on ? "tracking on" : "tracking off");
+  }
+  void setTrackingOffset(const Isometry& o) override {
+    offset = o;
+    calls.push_back("offset");
+  }
+  void setPoseTarget(const Isometry& p) override {
+    pose_active = true;
+    pose = p;
+    calls.push_back("pose");
+  }
+  void clearPoseTarget() override {
+    pose_active = false;
+    calls.push_back("clear pose");
+  }
+  void setPostureTarget(const Vector7&) override {
+    posture_active = true;
+    calls.push_back("posture");
+  }
+  void clearPostureTarget() override {
+    posture_active = false;
+    calls.push_back("clear posture");
+  }
+  void setSpeedScale(double s) override {
+    speed = s;
+    calls.push_back("speed " + num(s));
+  }
+  void setGripper(double w, double) override {
+    gripper_width = w;
+    calls.push_back("gripper " + num(w));
+  }
+  void setPayload(double m, const Vector3&) override {
+    payload = true;
+    calls.push_back("payload " + num(m));
+  }
+  void clearPayload() override {
+    payload = false;
+    calls.push_back("clear payload");
+  }
+  int count(const std::string& call) const {
+    int n = 0;
+    for (const auto& c : calls) n += c == call;
+    return n;
+  }
+};
+
+struct World {
+  static constexpr double kDt = 0.001;
+  static constexpr double kHandMass = 0.73;  // kg, the gripper hanging on the sensor
+  double time = 0.0;
+  Isometry tcp = Isometry::Identity();
+  Vector3 tcp_vel = Vector3::Zero();
+  Vector3 hand = Vector3(0.9, 0.2, 0.2);      // person's grip point
+  Vector3 hand_goal = hand;
+  double hand_speed = 0.5;                    // m/s along a straight line
+  Vector3 hand_vel = Vector3::Zero();
+  Vector3 object_in_hand = Vector3(0, 0, 0.05);
+  bool person_holds = true;
+  bool robot_grip = false;
+  bool graspable = true;     // false: fingers close on nothing
+  double width = 0.08;
+  double object_width = 0.04;
+  Vector3 object = Vector3::Zero();
+  double mass = 0.3;
+  Vector3 pull = Vector3::Zero();   // force of a pulling person, while both hold
+  double human_distance = 1.0;
+  bool dropout = false;     // perception sends nothing
+  double last_sample = 0.0;
+  bool hand_open = true;
+
+  World() {
+    tcp.linear() = Eigen::Vector3d(1, -1, -1).asDiagonal();
+    tcp.translation() = Vector3(0.31, 0.0, 0.49);
+    object = hand + object_in_hand;
+  }
+
+  void moveHand(const Vector3& goal, double speed) {
+    hand_goal = goal;
+    hand_speed = speed;
+  }
+
+  Isometry objectPose() const {
+    Isometry T = Isometry::Identity();
+    T.translation() = object;
+    return T;
+  }
+  Isometry handPose() const {
+    Isometry T = Isometry::Identity();
+    T.translation() = hand;
+    return T;
+  }
+
+  /// What the controller would make the TCP aim at.
+  Isometry desired(const RecordingController& c) const {
+    if (c.tracking && c.observation != ObservationTarget::kNone) {
+      return (c.observation == ObservationTarget::kObject ? objectPose() : handPose()) * c.offset;
+    }
+    if (c.pose_active) return c.pose;
+    return tcp;
+  }
+
+  void advance(const RecordingController& c) {
+    time += kDt;
+    // the person's hand: straight line at constant speed
+    const Vector3 dh = hand_goal - hand;
+    const double step = std::min(dh.norm(), hand_speed * kDt);
+    hand_vel = dh.norm() > 1e-12 ? Vector3(dh.normalized() * step / kDt) : Vector3::Zero();
+    hand += hand_vel * kDt;
+    // the TCP: first order toward the desired pose, speed-scaled and capped
+    const Isometry d = desired(c);
+    const Vector3 err = d.translation() - tcp.translation();
+    Vector3 v = 5.0 * err * c.speed;
+    if (v.norm() > 0.5) v = v.normalized() * 0.5;
+    tcp_vel = v;
+    tcp.translation() += v * kDt;
+    tcp.linear() = d.linear();
+    // gripper fingers at 0.1 m/s, stopped by the object if it is between them
+    const bool between = graspable && (object - tcp.translation()).norm() < 0.015;
+    const double target = c.gripper_width;
+    const double dw = std::max(-0.1 * kDt, std::min(0.1 * kDt, target - width));
+    width += dw;
+    if (between && width <= object_width) {
+      width = object_width;
+      robot_grip = true;
+    }
+    if (width > object_width + 0.005) robot_grip = false;
+    // the object goes with whoever holds it
+    if (person_holds) object = hand + object_in_hand;
+    else if (robot_grip) object = tcp.translation();
+    else object.z() = std::max(-0.5, object.z() - 0.5 * kDt);  // falls (not expected here)
+    if (!dropout) last_sample = time;
+  }
+
+  HandoverInput input(const RecordingController& c) const {
+    HandoverInput in;
+    in.time = time;
+    in.tcp_pose = tcp;
+    in.tcp_velocity.head<3>() = tcp_vel;
+    in.finger_width = width;
+    const bool robot_carries = robot_grip && !person_holds;
+    Vector3 f(0, 0, -(kHandMass + (robot_carries ? mass : 0.0)) * 9.81);
+    if (robot_grip && person_holds) f += pull;
+    in.wrench.head<3>() = f;
+    const double age = time - last_sample;
+    in.hand.pose = handPose();
+    in.hand.velocity.head<3>() = hand_vel;
+    in.hand.valid = !dropout;
+    in.hand.age = age;
+    in.object.pose = objectPose();
+    in.object.velocity.head<3>() = person_holds ? hand_vel : tcp_vel;
+    in.object.valid = !dropout;
+    in.object.age = age;
+    in.hand_open = hand_open;
+    in.human_distance = human_distance;
+    in.observed_target = c.observation;
+    in.target_pose = desired(c);
+    in.target_velocity.head<3>() =
+        c.observation == ObservationTarget::kHand ? hand_vel : in.object.velocity.head<3>().eval();
+    in.holds_object = robot_carries;
+    return in;
+  }
+};
+
+/// The machine on the shipped config, the fake controller and the world.
+struct Rig {
+  RecordingController ctl;
+  World world;
+  std::unique_ptr<HandoverFsm> fsm;
+  /// The scripted person, called every step before the machine (may be empty).
+  std::function<void(World&)> person;
+  explicit Rig(bool robot_starts_with_object = false) {
+    ObjectInfo obj;
+    obj.mass = world.mass;
+    fsm = HandoverFsm::fromFile(HandoverFsm::defaultConfigPath(), ctl, obj);
+    if (robot_starts_with_object) {
+      world.person_holds = false;
+      world.robot_grip = true;
+      world.width = world.object_width;
+      ctl.gripper_width = 0.0;
+      world.object = world.tcp.translation();
+      world.hand = world.hand_goal = Vector3(1.0, 0.3, 0.1);
+    }
+  }
+  void step() {
+    if (person) person(world);
+    fsm->step(world.input(ctl));
+    world.advance(ctl);
+  }
+  /// Steps until `pred` holds or `seconds` pass; returns whether it held.
+  template <class Pred>
+  bool runUntil(Pred pred, double seconds) {
+    const double end = world.time + seconds;
+    while (world.time < end) {
+      step();
+      if (pred()) return true;
+    }
+    return false;
+  }
+  bool runUntilState(const std::string& leaf, double seconds) {
+    return runUntil([&] { return endsWith(fsm->activePath(), leaf); }, seconds);
+  }
+  void runFor(double seconds) {
+    runUntil([] { return false; }, seconds);
+  }
+  static bool endsWith(const std::string& s, const std::string& tail) {
+    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+  }
+  /// Visited states without the meta states (a meta entry is followed by its child).
+  std::vector<std::string> leaves() const {
+    const auto all = fsm->visitedStates();
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      if (i + 1 < all.size() && all[i + 1].rfind(all[i] + "/", 0) == 0) continue;
+      out.push_back(all[i].substr(all[i].rfind('/') + 1));
+    }
+    return out;
+  }
+  /// Index of the first call equal to `call` at or after `from` (-1 if none).
+  int findCall(const std::string& call, int from = 0) const {
+    for (int i = from; i < static_cast<int>(ctl.calls.size()); ++i) {
+      if (ctl.calls[static_cast<std::size_t>(i)] == call) return i;
+    }
+    return -1;
+  }
+};
+
+using Leaves = std::vector<std::string>;
+
+}  // namespace handover::fsm::test

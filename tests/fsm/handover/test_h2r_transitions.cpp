@@ -1,0 +1,174 @@
+// Human to robot: every transition of the HumanToRobot machine on the shipped
+// config/fsm.yaml, driven by the toy world and checked through the visited
+// states, the controller calls and the counters.
+#include <gtest/gtest.h>
+
+#include "tests/fsm/handover/fake_world.hpp"
+
+namespace handover::fsm::test {
+namespace {
+
+const Vector3 kMeet(0.55, 0.0, 0.30);
+const Vector3 kAway(1.0, -0.3, 0.2);
+
+/// Lets go once the robot has gripped the object for 0.1 s.
+std::function<void(World&)> releasesAfterGrip() {
+  auto gripped_since = std::make_shared<double>(-1.0);
+  return [gripped_since](World& w) {
+    if (!w.robot_grip) {
+      *gripped_since = -1.0;
+      return;
+    }
+    if (*gripped_since < 0) *gripped_since = w.time;
+    if (w.time - *gripped_since >= 0.1) w.person_holds = false;
+  };
+}
+
+TEST(HandoverH2R, SuccessfulTakeVisitsEveryPhase) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  rig.person = releasesAfterGrip();
+  ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 15.0)) << rig.fsm->activePath();
+  EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "WaitForOffer", "Approach", "Grasp", "WaitForRelease",
+                                  "Retract", "Done"}));
+  EXPECT_EQ(rig.fsm->activePath(), "Done");
+  EXPECT_STREQ(rig.fsm->stats().outcome, "success");
+  EXPECT_EQ(rig.fsm->stats().handovers, 1);
+  EXPECT_EQ(rig.fsm->stats().aborts, 0);
+  EXPECT_EQ(rig.fsm->stats().retries, 0);
+  // controller calls in order: observe, open, close, payload, stow
+  const int observe = rig.findCall("observe object");
+  const int open = rig.findCall("gripper 0.08", observe);
+  const int track = rig.findCall("tracking on", observe);
+  const int close = rig.findCall("gripper 0.00", open);
+  const int payload = rig.findCall("payload 0.30", close);
+  ASSERT_GE(observe, 0);
+  ASSERT_GE(track, 0);
+  ASSERT_GT(open, observe);
+  ASSERT_GT(close, open);
+  ASSERT_GT(payload, close);
+  EXPECT_EQ(rig.ctl.count("payload 0.30"), 1);
+  EXPECT_EQ(rig.ctl.count("clear payload"), 0);
+  // the robot carries the object to the stow pose and rests there
+  EXPECT_TRUE(rig.world.robot_grip);
+  EXPECT_LT((rig.world.tcp.translation() - rig.fsm->params().stow_pose.translation()).norm(), 0.03);
+  EXPECT_FALSE(rig.ctl.tracking);
+  EXPECT_EQ(rig.ctl.observation, ObservationTarget::kNone);
+  EXPECT_TRUE(rig.ctl.pose_active);
+}
+
+TEST(HandoverH2R, GraspClosesOnlyWhenAligned) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
+  ASSERT_TRUE(rig.runUntil([&] { return rig.ctl.gripper_width == 0.0; }, 5.0));
+  const HandoverInput in = rig.world.input(rig.ctl);
+  EXPECT_LE((in.tcp_pose.translation() - in.target_pose.translation()).norm(), 0.013);
+  EXPECT_LE((in.tcp_velocity.head<3>() - in.target_velocity.head<3>()).norm(), 0.051);
+}
+
+TEST(HandoverH2R, WithdrawDuringApproachRetreatsAndRetries) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  rig.world.moveHand(kAway, 0.8);  // the person changes their mind
+  ASSERT_TRUE(rig.runUntilState("Retreat", 3.0));
+  const int gripper_calls = rig.ctl.count("gripper 0.08") + rig.ctl.count("gripper 0.00");
+  ASSERT_TRUE(rig.runUntilState("WaitForOffer", 5.0));
+  // Retreat (gripper: keep) never touches the gripper
+  EXPECT_EQ(rig.ctl.count("gripper 0.08") + rig.ctl.count("gripper 0.00"), gripper_calls);
+  EXPECT_LT((rig.world.tcp.translation() - rig.fsm->params().safe_pose.translation()).norm(), 0.05);
+  EXPECT_EQ(rig.fsm->stats().aborts, 1);
+  EXPECT_EQ(rig.fsm->stats().retries, 1);
+  // second offer succeeds
+  rig.world.moveHand(kMeet, 0.5);
+  rig.person = releasesAfterGrip();
+  ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 15.0)) << rig.fsm->activePath();
+  EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "WaitForOffer", "Approach", "Retreat", "WaitForOffer",
+                                  "Approach", "Grasp", "WaitForRelease", "Retract", "Done"}));
+  EXPECT_STREQ(rig.fsm->stats().outcome, "success");
+  EXPECT_EQ(rig.fsm->stats().handovers, 1);
+}
+
+TEST(HandoverH2R, StaleDataDuringApproachCountsAsWithdrawal) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  rig.world.dropout = true;
+  rig.runFor(0.4);  // shorter than stale_timeout: keep going
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Approach") || Rig::endsWith(rig.fsm->activePath(), "Grasp"));
+  ASSERT_TRUE(rig.runUntilState("Retreat", 0.5));
+  EXPECT_EQ(rig.fsm->stats().aborts, 1);
+}
+
+TEST(HandoverH2R, GivesUpAfterMaxRetries) {
+  Rig rig;
+  const int max_retries = rig.fsm->params().max_retries;
+  // the person offers, then withdraws at every approach
+  for (int attempt = 0; attempt <= max_retries; ++attempt) {
+    rig.world.moveHand(kMeet, 0.5);
+    ASSERT_TRUE(rig.runUntilState("/Approach", 10.0)) << attempt;
+    rig.world.moveHand(kAway, 0.8);
+    ASSERT_TRUE(rig.runUntilState("Retreat", 3.0)) << attempt;
+    ASSERT_TRUE(rig.runUntil([&] { return !Rig::endsWith(rig.fsm->activePath(), "Retreat"); }, 5.0));
+  }
+  EXPECT_EQ(rig.fsm->activePath(), "Aborted");
+  EXPECT_STREQ(rig.fsm->stats().outcome, "aborted");
+  EXPECT_EQ(rig.fsm->stats().aborts, max_retries + 1);
+  EXPECT_EQ(rig.fsm->stats().retries, max_retries);
+  EXPECT_EQ(rig.fsm->stats().handovers, 0);
+  // at rest: no tracking, holding a pose, nothing moves any more
+  EXPECT_FALSE(rig.ctl.tracking);
+  EXPECT_TRUE(rig.ctl.pose_active);
+  rig.runFor(0.5);
+  EXPECT_LT(rig.world.tcp_vel.norm(), 1e-3);
+}
+
+TEST(HandoverH2R, PersonWhoNeverComesBackEndsAborted) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  rig.world.moveHand(kAway, 0.8);
+  ASSERT_TRUE(rig.runUntilState("WaitForOffer", 8.0));
+  const double waiting_since = rig.world.time;
+  ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 30.0));
+  EXPECT_NEAR(rig.world.time - waiting_since, 20.0, 0.1);  // WaitForOffer timeout in config/fsm.yaml
+  EXPECT_EQ(rig.leaves(),
+            (Leaves{"SelectDirection", "WaitForOffer", "Approach", "Retreat", "WaitForOffer", "Aborted"}));
+  EXPECT_STREQ(rig.fsm->stats().outcome, "aborted");
+  EXPECT_EQ(rig.fsm->stats().aborts, 1);
+  EXPECT_EQ(rig.fsm->stats().retries, 1);
+}
+
+TEST(HandoverH2R, NoReleaseOpensAndRetreatsWithoutPayload) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);  // the person never lets go
+  ASSERT_TRUE(rig.runUntilState("WaitForRelease", 10.0));
+  const double since = rig.world.time;
+  ASSERT_TRUE(rig.runUntilState("RetreatOpen", 6.0));
+  EXPECT_NEAR(rig.world.time - since, 5.0, 0.01);
+  EXPECT_GT(rig.findCall("gripper 0.08", rig.findCall("gripper 0.00")), 0);  // opened after closing
+  EXPECT_EQ(rig.ctl.count("payload 0.30"), 0);
+  EXPECT_EQ(rig.ctl.gripper_width, rig.fsm->params().gripper_open_width);
+  ASSERT_TRUE(rig.runUntilState("WaitForOffer", 5.0));
+  EXPECT_TRUE(rig.world.person_holds);  // the person still has their object
+  EXPECT_FALSE(rig.world.robot_grip);
+  EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "WaitForOffer", "Approach", "Grasp", "WaitForRelease",
+                                  "RetreatOpen", "WaitForOffer"}));
+  EXPECT_EQ(rig.fsm->stats().aborts, 1);
+  EXPECT_EQ(rig.fsm->stats().retries, 1);
+}
+
+TEST(HandoverH2R, EmptyGraspIsMissedAndRetried) {
+  Rig rig;
+  rig.world.graspable = false;  // the fingers close on nothing
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("RetreatOpen", 12.0));
+  EXPECT_EQ(rig.leaves(),
+            (Leaves{"SelectDirection", "WaitForOffer", "Approach", "Grasp", "RetreatOpen"}));
+  EXPECT_EQ(rig.fsm->machine().history().entries().back().state->path(), "Handover/HumanToRobot/RetreatOpen");
+  EXPECT_EQ(rig.ctl.count("payload 0.30"), 0);
+}
+
+}  // namespace
+}  // namespace handover::fsm::test

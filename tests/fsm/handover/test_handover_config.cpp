@@ -1,0 +1,102 @@
+// config/fsm.yaml loads; broken copies of it are rejected with file, key, line.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "tests/fsm/handover/fake_world.hpp"
+
+namespace handover::fsm::test {
+namespace {
+
+std::string shipped() {
+  std::ifstream in(HandoverFsm::defaultConfigPath());
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto pos = text.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  if (pos != std::string::npos) text.replace(pos, from.size(), to);
+  return text;
+}
+
+int lineOf(const std::string& text, const std::string& what) {
+  const auto pos = text.find(what);
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(pos), '\n'));
+}
+
+std::string loadError(const std::string& text) {
+  RecordingController ctl;
+  try {
+    HandoverFsm fsm(YamlReader::loadString(text, "fsm.yaml"), ctl, ObjectInfo{});
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(HandoverConfig, ShippedConfigLoads) {
+  EXPECT_EQ(loadError(shipped()), "");
+  RecordingController ctl;
+  HandoverFsm fsm(YamlReader::loadFile(HandoverFsm::defaultConfigPath()), ctl, ObjectInfo{});
+  EXPECT_EQ(fsm.machine().interruptCount(), 2);
+}
+
+TEST(HandoverConfig, TypoInStateKey) {
+  // a misspelt required key: reported as missing, at the state's line
+  std::string bad = replaced(shipped(), "release_fraction: 0.7", "release_fractoin: 0.7");
+  std::string msg = loadError(bad);
+  EXPECT_NE(msg.find("fsm.yaml:" + std::to_string(lineOf(bad, "release_fractoin"))), std::string::npos) << msg;
+  EXPECT_NE(msg.find("WaitForRelease': missing required key 'release_fraction'"), std::string::npos) << msg;
+  // an extra key: reported as unknown, at its own line
+  bad = replaced(shipped(), "release_fraction: 0.7", "release_fraction: 0.7, relase_delay: 1");
+  msg = loadError(bad);
+  EXPECT_NE(msg.find("fsm.yaml:" + std::to_string(lineOf(bad, "relase_delay"))), std::string::npos) << msg;
+  EXPECT_NE(msg.find("unknown key 'relase_delay'"), std::string::npos) << msg;
+}
+
+TEST(HandoverConfig, UnknownTargetState) {
+  const std::string bad = replaced(shipped(), "[Grasp, Grasped, WaitForRelease]", "[Grasp, Grasped, WaitForRelaese]");
+  const std::string msg = loadError(bad);
+  EXPECT_NE(msg.find("fsm.yaml:" + std::to_string(lineOf(bad, "WaitForRelaese"))), std::string::npos) << msg;
+  EXPECT_NE(msg.find("unknown state 'WaitForRelaese'"), std::string::npos) << msg;
+}
+
+TEST(HandoverConfig, UnknownOutput) {
+  const std::string msg = loadError(replaced(shipped(), "[Grasp, Missed, RetreatOpen]", "[Grasp, Dropped, RetreatOpen]"));
+  EXPECT_NE(msg.find("state 'Grasp' has no output 'Dropped' (outputs: Grasped, Missed, Withdrawn, Timeout)"),
+            std::string::npos)
+      << msg;
+}
+
+TEST(HandoverConfig, BadParameterValues) {
+  std::string msg = loadError(replaced(shipped(), "gravity_sign: -1", "gravity_sign: 2"));
+  EXPECT_NE(msg.find("params.ft.gravity_sign"), std::string::npos) << msg;
+  msg = loadError(replaced(shipped(), "pull_threshold: 3.0", "pull_threshold: -3.0"));
+  EXPECT_NE(msg.find("pull_threshold"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("must be > 0"), std::string::npos) << msg;
+  msg = loadError(replaced(shipped(), "pose: stow", "pose: home"));
+  EXPECT_NE(msg.find("'home' is not one of: stow | safe | ready"), std::string::npos) << msg;
+  msg = loadError(replaced(shipped(), "close_width: 0.0", "close_width: 0.09"));
+  EXPECT_NE(msg.find("params.gripper.close_width"), std::string::npos) << msg;
+}
+
+TEST(HandoverConfig, MissingThresholdIsAnError) {
+  const std::string msg = loadError(replaced(shipped(), "near_distance: 0.08, timeout: 10.0}\n            Present",
+                                             "timeout: 10.0}\n            Present"));
+  EXPECT_NE(msg.find("missing required key 'near_distance'"), std::string::npos) << msg;
+}
+
+TEST(HandoverConfig, BadObjectMass) {
+  RecordingController ctl;
+  ObjectInfo obj;
+  obj.mass = 0.0;
+  EXPECT_THROW(HandoverFsm(YamlReader::loadString(shipped(), "fsm.yaml"), ctl, obj), InputError);
+}
+
+}  // namespace
+}  // namespace handover::fsm::test

@@ -1,0 +1,124 @@
+// Robot to human: every transition of the RobotToHuman machine on the shipped
+// config/fsm.yaml, driven by the toy world.
+#include <gtest/gtest.h>
+
+#include "tests/fsm/handover/fake_world.hpp"
+
+namespace handover::fsm::test {
+namespace {
+
+const Vector3 kReceive(0.60, 0.0, 0.35);
+const Vector3 kAway(1.0, -0.3, 0.2);
+
+/// Takes the object once it has rested in the hand for 0.5 s, pulls while
+/// both hold it, and walks away with it once the robot lets go.
+std::function<void(World&)> receiverWhoPulls(bool pulls) {
+  auto resting_since = std::make_shared<double>(-1.0);
+  return [resting_since, pulls](World& w) {
+    if (w.person_holds) {
+      w.pull = pulls ? Vector3(5.0, 0.0, 0.0) : Vector3::Zero();
+      if (!w.robot_grip) w.moveHand(kAway, 0.3);
+      return;
+    }
+    const bool in_hand = (w.object - (w.hand + w.object_in_hand)).norm() < 0.01 && w.tcp_vel.norm() < 0.01;
+    if (!in_hand) {
+      *resting_since = -1.0;
+      return;
+    }
+    if (*resting_since < 0) *resting_since = w.time;
+    if (pulls && w.time - *resting_since >= 0.5) w.person_holds = true;
+  };
+}
+
+TEST(HandoverR2H, SuccessfulGiveVisitsEveryPhase) {
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+  rig.world.moveHand(kReceive, 0.5);
+  rig.person = receiverWhoPulls(true);
+  ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 20.0)) << rig.fsm->activePath();
+  EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "HoldReady", "WaitForReceiver", "Approach", "Present",
+                                  "DetectPull", "Release", "ConfirmGone", "Retract", "Done"}));
+  EXPECT_STREQ(rig.fsm->stats().outcome, "success");
+  EXPECT_EQ(rig.fsm->stats().handovers, 1);
+  EXPECT_EQ(rig.fsm->stats().aborts, 0);
+  // keep the grip and set the payload, observe the hand, open, then drop the payload
+  const int grip = rig.findCall("gripper 0.00");
+  const int payload = rig.findCall("payload 0.30");
+  const int hand = rig.findCall("observe hand");
+  const int open = rig.findCall("gripper 0.08");
+  const int cleared = rig.findCall("clear payload");
+  ASSERT_GE(grip, 0);
+  ASSERT_GE(payload, 0);
+  ASSERT_GE(hand, 0);
+  ASSERT_GT(open, hand);
+  ASSERT_GT(cleared, open);
+  EXPECT_EQ(rig.ctl.count("gripper 0.08"), 1);
+  EXPECT_TRUE(rig.world.person_holds);
+  EXPECT_FALSE(rig.world.robot_grip);
+  EXPECT_FALSE(rig.ctl.payload);
+}
+
+TEST(HandoverR2H, WaitsForAnOpenHand) {
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0));
+  rig.world.hand_open = false;  // the person comes with a full hand
+  rig.world.moveHand(kReceive, 0.5);
+  rig.runFor(2.0);
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "WaitForReceiver"));
+  rig.world.hand_open = true;
+  ASSERT_TRUE(rig.runUntilState("/Approach", 1.0));
+  EXPECT_EQ(rig.ctl.observation, ObservationTarget::kHand);
+  EXPECT_TRUE(rig.ctl.tracking);
+  // the tracking offset puts the object where params.object_in_hand says
+  const Isometry expected = rig.fsm->params().object_in_hand;
+  EXPECT_TRUE(rig.ctl.offset.isApprox(expected, 1e-12));
+}
+
+TEST(HandoverR2H, NoPullKeepsHoldingRetreatsAndRetries) {
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0));
+  rig.world.moveHand(kReceive, 0.5);
+  rig.person = receiverWhoPulls(false);  // presents an open hand but never takes
+  ASSERT_TRUE(rig.runUntilState("DetectPull", 10.0)) << rig.fsm->activePath();
+  const double since = rig.world.time;
+  ASSERT_TRUE(rig.runUntilState("Retreat", 7.0));
+  EXPECT_NEAR(rig.world.time - since, 6.0, 0.01);  // DetectPull timeout
+  ASSERT_TRUE(rig.runUntilState("HoldReady", 5.0));
+  EXPECT_EQ(rig.ctl.count("gripper 0.08"), 0);  // never opened
+  EXPECT_EQ(rig.ctl.count("clear payload"), 0);
+  EXPECT_TRUE(rig.world.robot_grip);
+  EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "HoldReady", "WaitForReceiver", "Approach", "Present",
+                                  "DetectPull", "Retreat", "HoldReady"}));
+  EXPECT_EQ(rig.fsm->stats().aborts, 1);
+  EXPECT_EQ(rig.fsm->stats().retries, 1);
+}
+
+TEST(HandoverR2H, WithdrawDuringApproachRetreatsHoldingTheObject) {
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0));
+  rig.world.moveHand(kReceive, 0.5);
+  ASSERT_TRUE(rig.runUntilState("/Approach", 5.0));
+  rig.world.moveHand(kAway, 0.8);
+  ASSERT_TRUE(rig.runUntilState("Retreat", 3.0));
+  ASSERT_TRUE(rig.runUntilState("HoldReady", 5.0));
+  EXPECT_TRUE(rig.world.robot_grip);
+  EXPECT_EQ(rig.ctl.count("gripper 0.08"), 0);
+  EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "HoldReady", "WaitForReceiver", "Approach", "Retreat",
+                                  "HoldReady"}));
+  EXPECT_EQ(rig.fsm->stats().aborts, 1);
+  EXPECT_EQ(rig.fsm->stats().retries, 1);
+}
+
+TEST(HandoverR2H, WithdrawWhilePresentingRetreats) {
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0));
+  rig.world.moveHand(kReceive, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Present", 10.0));
+  rig.world.moveHand(kAway, 0.8);
+  ASSERT_TRUE(rig.runUntilState("Retreat", 3.0));
+  EXPECT_EQ(rig.leaves().back(), "Retreat");
+  EXPECT_EQ(rig.leaves()[rig.leaves().size() - 2], "Present");
+}
+
+}  // namespace
+}  // namespace handover::fsm::test

@@ -1,0 +1,98 @@
+// The safety layer of the handover machine: slow down and stop.
+#include <gtest/gtest.h>
+
+#include "tests/fsm/handover/fake_world.hpp"
+
+namespace handover::fsm::test {
+namespace {
+
+const Vector3 kMeet(0.55, 0.0, 0.30);
+
+TEST(HandoverSafety, CloseArmSlowsDownWithoutChangingState) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("/Approach", 5.0));
+  rig.world.human_distance = 0.2;  // forearm near the robot, hand still far from the TCP
+  rig.step();
+  EXPECT_DOUBLE_EQ(rig.ctl.speed, 0.3);
+  EXPECT_EQ(rig.ctl.count("speed 0.30"), 1);
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Approach"));
+  rig.world.human_distance = 1.0;
+  rig.step();
+  EXPECT_DOUBLE_EQ(rig.ctl.speed, 1.0);  // the overlay's teardown restored the scale
+  EXPECT_EQ(rig.ctl.count("speed 1.00"), 1);
+  EXPECT_EQ(rig.fsm->stats().safety_stops, 0);
+}
+
+TEST(HandoverSafety, TooCloseStopsTearsDownAndResumes) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("/Approach", 5.0));
+  ASSERT_TRUE(rig.ctl.tracking);
+  const double gripper = rig.ctl.gripper_width;
+  rig.world.human_distance = 0.05;
+  rig.step();
+  EXPECT_EQ(rig.fsm->activePath(), "SafetyStop");
+  // the approach's tracking and observation were removed, the TCP is held
+  EXPECT_FALSE(rig.ctl.tracking);
+  EXPECT_EQ(rig.ctl.observation, ObservationTarget::kNone);
+  EXPECT_TRUE(rig.ctl.pose_active);
+  EXPECT_EQ(rig.ctl.gripper_width, gripper);  // gripper untouched
+  EXPECT_EQ(rig.fsm->stats().safety_stops, 1);
+  rig.runFor(1.0);
+  EXPECT_EQ(rig.fsm->activePath(), "SafetyStop");  // stays while the person is close
+  EXPECT_LT(rig.world.tcp_vel.norm(), 0.05);
+  rig.world.human_distance = 1.0;
+  ASSERT_TRUE(rig.runUntilState("/Approach", 2.0));  // clear for 0.5 s, then the handover resumes
+  const auto leaves = rig.leaves();
+  // closer than the slow-down distance too, so the overlay started first
+  const Leaves expected{"SelectDirection", "WaitForOffer", "Approach", "SlowDown", "SafetyStop",
+                        "SelectDirection", "WaitForOffer", "Approach"};
+  EXPECT_EQ(leaves, expected);
+  bool marked = false;
+  for (const auto& e : rig.fsm->machine().history().entries()) marked = marked || (e.interrupt && e.path() == "SafetyStop");
+  EXPECT_TRUE(marked);
+}
+
+TEST(HandoverSafety, HandInGraspZoneIsNotAnIntrusion) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
+  rig.world.human_distance = 0.05;  // the hand is at the gripper: that is the handover
+  rig.runFor(0.2);
+  EXPECT_NE(rig.fsm->activePath(), "SafetyStop");
+  EXPECT_EQ(rig.fsm->stats().safety_stops, 0);
+  EXPECT_DOUBLE_EQ(rig.ctl.speed, 1.0);
+}
+
+TEST(HandoverSafety, NoInterruptOnceDone) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  rig.world.dropout = true;  // nobody is seen: wait times out
+  ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 25.0));
+  rig.world.human_distance = 0.05;
+  rig.runFor(0.1);
+  EXPECT_EQ(rig.fsm->activePath(), "Aborted");
+  EXPECT_EQ(rig.fsm->stats().safety_stops, 0);
+}
+
+TEST(HandoverSafety, NonFiniteInputsAreCountedNotFollowed) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("/Approach", 5.0));
+  HandoverInput in = rig.world.input(rig.ctl);
+  in.object.pose.translation().x() = std::nan("");
+  in.wrench[2] = std::nan("");
+  in.human_distance = std::nan("");
+  const Vector3 force_before = rig.fsm->context().force;
+  rig.fsm->step(in);
+  EXPECT_EQ(rig.fsm->stats().bad_input_cycles, 1);
+  EXPECT_TRUE(rig.fsm->context().force.allFinite());
+  EXPECT_TRUE(rig.fsm->context().force.isApprox(force_before));
+  EXPECT_FALSE(rig.fsm->context().in.object.valid);
+  // an unknown distance is treated as the worst case: stop
+  EXPECT_EQ(rig.fsm->activePath(), "SafetyStop");
+}
+
+}  // namespace
+}  // namespace handover::fsm::test
