@@ -73,9 +73,11 @@ ViewerWindow::ViewerWindow(const mjModel* m, const ViewerOptions& options)
 
   glfwSetWindowUserPointer(window_, this);
   glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int b, int a, int mods) {
-    self(w)->onMouseButton(b, a, mods);
+    double x = 0, y = 0;
+    glfwGetCursorPos(w, &x, &y);
+    self(w)->mouseButton(b, a == GLFW_PRESS, mods, x, y, glfwGetTime());
   });
-  glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) { self(w)->onCursor(x, y); });
+  glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) { self(w)->mouseMove(x, y); });
   glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double yoff) { self(w)->onScroll(yoff); });
   glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int mods) {
     self(w)->onKey(key, action, mods);
@@ -195,52 +197,57 @@ int ViewerWindow::selectAt(const mjModel* m, mjData* d, double relx, double rely
   return -1;
 }
 
-void ViewerWindow::onMouseButton(int button, int action, int mods) {
-  left_ = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-  right_ = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
-  middle_ = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
+void ViewerWindow::mouseButton(int button, bool pressed, int mods, double x, double y, double time) {
+  if (m_ == nullptr || d_ == nullptr) return;
+  bool* state = button == GLFW_MOUSE_BUTTON_LEFT    ? &left_
+                : button == GLFW_MOUSE_BUTTON_RIGHT ? &right_
+                : button == GLFW_MOUSE_BUTTON_MIDDLE ? &middle_
+                                                     : nullptr;
+  if (state != nullptr) *state = pressed;
   shift_ = (mods & GLFW_MOD_SHIFT) != 0;
   ctrl_ = (mods & GLFW_MOD_CONTROL) != 0;
-  glfwGetCursorPos(window_, &last_x_, &last_y_);
+  last_x_ = x;
+  last_y_ = y;
 
-  if (action == GLFW_PRESS) {
-    const double t = glfwGetTime();
-    if (button == last_click_button_ && t - last_click_time_ < kDoubleClickSeconds) {
-      last_click_time_ = -1;
-      int width = 0, height = 0;
-      glfwGetWindowSize(window_, &width, &height);
-      const double relx = last_x_ / std::max(1, width), rely = (height - last_y_) / std::max(1, height);
-      if (button == GLFW_MOUSE_BUTTON_LEFT) {
-        selectAt(m_, d_, relx, rely);
-      } else if (button == GLFW_MOUSE_BUTTON_RIGHT) {
-        mjtNum point[3];
-        int geom = -1, skin = -1;
-        if (mjv_select(m_, d_, &option_, static_cast<mjtNum>(width) / std::max(1, height), relx, rely,
-                       &scene_, point, &geom, &skin) >= 0) {
-          toFreeCamera();
-          mju_copy3(camera_.lookat, point);
-        }
-      }
-      return;
-    }
-    last_click_time_ = t;
-    last_click_button_ = button;
-    if (ctrl_ && drag_.selected() > 0 &&
-        (button == GLFW_MOUSE_BUTTON_LEFT || button == GLFW_MOUSE_BUTTON_RIGHT)) {
-      drag_.begin(m_, d_, &scene_, button == GLFW_MOUSE_BUTTON_RIGHT ? mjPERT_TRANSLATE : mjPERT_ROTATE);
+  if (!pressed) {
+    if (!left_ && !right_ && drag_.active()) {
+      drag_.end(m_, d_);
       notifyDrag();
     }
-  } else if (!left_ && !right_ && drag_.active()) {
-    drag_.end(m_, d_);
+    return;
+  }
+  if (button == last_click_button_ && time - last_click_time_ < kDoubleClickSeconds) {
+    last_click_time_ = -1;
+    int width = 0, height = 0;
+    glfwGetWindowSize(window_, &width, &height);
+    const double relx = x / std::max(1, width), rely = (height - y) / std::max(1, height);
+    if (button == GLFW_MOUSE_BUTTON_LEFT) {
+      selectAt(m_, d_, relx, rely);
+    } else if (button == GLFW_MOUSE_BUTTON_RIGHT) {
+      mjtNum point[3];
+      int geom = -1, skin = -1;
+      if (mjv_select(m_, d_, &option_, static_cast<mjtNum>(width) / std::max(1, height), relx, rely,
+                     &scene_, point, &geom, &skin) >= 0) {
+        toFreeCamera();
+        mju_copy3(camera_.lookat, point);
+      }
+    }
+    return;
+  }
+  last_click_time_ = time;
+  last_click_button_ = button;
+  if (ctrl_ && drag_.selected() > 0 &&
+      (button == GLFW_MOUSE_BUTTON_LEFT || button == GLFW_MOUSE_BUTTON_RIGHT)) {
+    drag_.begin(m_, d_, &scene_, button == GLFW_MOUSE_BUTTON_RIGHT ? mjPERT_TRANSLATE : mjPERT_ROTATE);
     notifyDrag();
   }
 }
 
-void ViewerWindow::onCursor(double x, double y) {
+void ViewerWindow::mouseMove(double x, double y) {
   const double dx = x - last_x_, dy = y - last_y_;
   last_x_ = x;
   last_y_ = y;
-  if (!left_ && !right_ && !middle_) return;
+  if (m_ == nullptr || d_ == nullptr || (!left_ && !right_ && !middle_)) return;
   int width = 0, height = 0;
   glfwGetWindowSize(window_, &width, &height);
   if (height <= 0) return;
@@ -257,6 +264,7 @@ void ViewerWindow::onCursor(double x, double y) {
 }
 
 void ViewerWindow::onScroll(double yoffset) {
+  if (m_ == nullptr) return;
   toFreeCamera();
   mjv_moveCamera(m_, mjMOUSE_ZOOM, 0, -0.05 * yoffset, &scene_, &camera_);
 }
@@ -264,7 +272,7 @@ void ViewerWindow::onScroll(double yoffset) {
 void ViewerWindow::onKey(int key, int action, int mods) {
   shift_ = (mods & GLFW_MOD_SHIFT) != 0;
   ctrl_ = (mods & GLFW_MOD_CONTROL) != 0;
-  if (action != GLFW_PRESS) return;
+  if (action != GLFW_PRESS || m_ == nullptr || d_ == nullptr) return;
   switch (key) {
     case GLFW_KEY_SPACE: paused_ = !paused_; break;
     case GLFW_KEY_BACKSPACE: drag_.releaseHeld(); break;

@@ -74,13 +74,17 @@ class ViewerWindow {
   /// Selects the body under the window point (relx, rely in [0, 1], origin
   /// bottom left) with mjv_select; returns its id or -1.
   int selectAt(const mjModel* m, mjData* d, double relx, double rely);
+  /// Feeds a mouse event as the window reports it: x, y in window
+  /// coordinates (origin top left), `mods` GLFW_MOD_* bits, `time` in s (for
+  /// double-clicks). The GLFW callbacks call these; tests and demos may too.
+  /// Acts on the model/data of the last frame() call (no-op before it).
+  void mouseButton(int button, bool pressed, int mods, double x, double y, double time);
+  void mouseMove(double x, double y);
   BodyDrag& drag() { return drag_; }
   const mjvScene& scene() const { return scene_; }
   mjvCamera& camera() { return camera_; }
 
  private:
-  void onMouseButton(int button, int action, int mods);
-  void onCursor(double x, double y);
   void onScroll(double yoffset);
   void onKey(int key, int action, int mods);
   void draw(const mjModel* m, mjData* d, const std::string& state);

@@ -3,7 +3,10 @@
 // VideoRecorder, close.
 #include <gtest/gtest.h>
 
+#include <GLFW/glfw3.h>
+
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -106,6 +109,51 @@ TEST_F(ViewerTest, DrawsSelectsAndDragsTheHand) {
 
   viewer.requestClose();
   EXPECT_FALSE(viewer.frame(m_, d_, "closing"));
+}
+
+TEST_F(ViewerTest, DoubleClickAndCtrlRightDragMoveTheHandLikeAUser) {
+  ViewerWindow viewer(m_, smallWindow());  // 320x240, camera "front" (fovy 45, 1 m from the scene)
+  ASSERT_TRUE(viewer.frame(m_, d_));
+  int calls = 0;
+  bool last_dragging = true;
+  viewer.onDrag([&](const DraggedPose& p) {
+    ++calls;
+    last_dragging = p.dragging;
+  });
+
+  // The hand's sphere centre (0.37, 0, 0.3) is 1 m in front of the camera and
+  // 0.37 m to the right: x = 160 + 160 * 0.37 / (tan(22.5 deg) * 320/240) = 267 px.
+  const double hx = 160 + 160 * 0.37 / (std::tan(22.5 * M_PI / 180) * 320.0 / 240.0), hy = 120;
+  viewer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true, 0, hx, hy, 10.00);
+  viewer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false, 0, hx, hy, 10.05);
+  viewer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true, 0, hx, hy, 10.15);  // double-click
+  viewer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false, 0, hx, hy, 10.20);
+  const int hand = mj_name2id(m_, mjOBJ_BODY, "hand");
+  ASSERT_EQ(viewer.drag().selected(), hand) << "double-click did not select the hand";
+
+  // ctrl + right drag 24 px to the right and 24 px up
+  const int mocap = m_->body_mocapid[hand];
+  const double x0 = d_->mocap_pos[3 * mocap], y0 = d_->mocap_pos[3 * mocap + 1], z0 = d_->mocap_pos[3 * mocap + 2];
+  viewer.mouseButton(GLFW_MOUSE_BUTTON_RIGHT, true, GLFW_MOD_CONTROL, hx, hy, 11.0);
+  for (int i = 1; i <= 4; ++i) viewer.mouseMove(hx + 6 * i, hy - 6 * i);
+  viewer.mouseButton(GLFW_MOUSE_BUTTON_RIGHT, false, GLFW_MOD_CONTROL, hx + 24, hy - 24, 11.5);
+  ASSERT_TRUE(viewer.frame(m_, d_));
+
+  ASSERT_TRUE(viewer.draggedPose().has_value());
+  EXPECT_GT(d_->mocap_pos[3 * mocap] - x0, 0.01) << "not moved right";
+  EXPECT_GT(d_->mocap_pos[3 * mocap + 2] - z0, 0.01) << "not moved up";
+  EXPECT_NEAR(d_->mocap_pos[3 * mocap + 1], y0, 1e-9) << "left the camera's plane";
+  EXPECT_GE(calls, 6) << "onDrag: press, 4 moves, release";
+  EXPECT_FALSE(last_dragging) << "the last callback is the release";
+
+  // a plain left drag orbits the camera and leaves the hand alone
+  const DraggedPose before = *viewer.draggedPose();
+  viewer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, true, 0, 100, 100, 12.0);
+  viewer.mouseMove(140, 100);
+  viewer.mouseButton(GLFW_MOUSE_BUTTON_LEFT, false, 0, 140, 100, 12.2);
+  EXPECT_EQ(viewer.camera().type, mjCAMERA_FREE) << "orbiting should leave the fixed camera";
+  EXPECT_DOUBLE_EQ(viewer.draggedPose()->pos[0], before.pos[0]);
+  ASSERT_TRUE(viewer.frame(m_, d_));
 }
 
 TEST_F(ViewerTest, RealtimePacingWaitsForTheWallClock) {
