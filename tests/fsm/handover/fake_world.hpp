@@ -15,6 +15,7 @@
 namespace handover::fsm::test {
 
 struct RecordingController : ControllerInterface {
+  bool record = true;  ///< false: keep the state only (no allocation)
   std::vector<std::string> calls;
   ObservationTarget observation = ObservationTarget::kNone;
   bool tracking = false;
@@ -33,48 +34,48 @@ struct RecordingController : ControllerInterface {
   }
   void setObservationTarget(ObservationTarget t) override {
     observation = t;
-    calls.push_back(std::string("observe ") + toString(t));
+    if (record) calls.push_back(std::string("observe ") + toString(t));
   }
   void enableTracking(bool on) override {
     tracking = on;
-    calls.push_back(on ? "tracking on" : "tracking off");
+    if (record) calls.push_back(on ? "tracking on" : "tracking off");
   }
   void setTrackingOffset(const Isometry& o) override {
     offset = o;
-    calls.push_back("offset");
+    if (record) calls.push_back("offset");
   }
   void setPoseTarget(const Isometry& p) override {
     pose_active = true;
     pose = p;
-    calls.push_back("pose");
+    if (record) calls.push_back("pose");
   }
   void clearPoseTarget() override {
     pose_active = false;
-    calls.push_back("clear pose");
+    if (record) calls.push_back("clear pose");
   }
   void setPostureTarget(const Vector7&) override {
     posture_active = true;
-    calls.push_back("posture");
+    if (record) calls.push_back("posture");
   }
   void clearPostureTarget() override {
     posture_active = false;
-    calls.push_back("clear posture");
+    if (record) calls.push_back("clear posture");
   }
   void setSpeedScale(double s) override {
     speed = s;
-    calls.push_back("speed " + num(s));
+    if (record) calls.push_back("speed " + num(s));
   }
   void setGripper(double w, double) override {
     gripper_width = w;
-    calls.push_back("gripper " + num(w));
+    if (record) calls.push_back("gripper " + num(w));
   }
   void setPayload(double m, const Vector3&) override {
     payload = true;
-    calls.push_back("payload " + num(m));
+    if (record) calls.push_back("payload " + num(m));
   }
   void clearPayload() override {
     payload = false;
-    calls.push_back("clear payload");
+    if (record) calls.push_back("clear payload");
   }
   int count(const std::string& call) const {
     int n = 0;
