@@ -287,22 +287,24 @@ bool Simulation::setHumanPoses(const HumanBodyPoses& p) {
   return true;
 }
 
+void Simulation::syncWeldReference() {
+  // current poses, read from the state itself (xpos lags one step after mj_step)
+  const Eigen::Isometry3d hand = humanHandPose();
+  const Eigen::Isometry3d obj = poseFrom(d_->qpos + object_qpos_, d_->qpos + object_qpos_ + 3);
+  const Eigen::Isometry3d rel = hand.inverse() * obj;
+  const Eigen::Quaterniond q(rel.linear());
+  mjtNum* data = m_->eq_data + mjNEQDATA * weld_;
+  // MuJoCo 2.2.2 weld: anchor (in body2) 0..2, relpos (body2 in body1) 3..5, relquat 6..9
+  data[0] = data[1] = data[2] = 0.0;
+  for (int i = 0; i < 3; ++i) data[3 + i] = rel.translation()[i];
+  data[6] = q.w();
+  data[7] = q.x();
+  data[8] = q.y();
+  data[9] = q.z();
+}
+
 void Simulation::setObjectWeld(bool on) {
-  if (on && !m_->eq_active[weld_]) {
-    // current poses, read from the state itself (xpos lags one step after mj_step)
-    const Eigen::Isometry3d hand = humanHandPose();
-    const Eigen::Isometry3d obj = poseFrom(d_->qpos + object_qpos_, d_->qpos + object_qpos_ + 3);
-    const Eigen::Isometry3d rel = hand.inverse() * obj;
-    const Eigen::Quaterniond q(rel.linear());
-    mjtNum* data = m_->eq_data + mjNEQDATA * weld_;
-    // MuJoCo 2.2.2 weld: anchor (in body2) 0..2, relpos (body2 in body1) 3..5, relquat 6..9
-    data[0] = data[1] = data[2] = 0.0;
-    for (int i = 0; i < 3; ++i) data[3 + i] = rel.translation()[i];
-    data[6] = q.w();
-    data[7] = q.x();
-    data[8] = q.y();
-    data[9] = q.z();
-  }
+  if (on && !m_->eq_active[weld_]) syncWeldReference();
   m_->eq_active[weld_] = on ? 1 : 0;
 }
 
@@ -321,6 +323,7 @@ void Simulation::setObjectQpos(const Eigen::Isometry3d& pose, const Vector6& vel
 void Simulation::placeObject(const Eigen::Isometry3d& pose, const Vector6& velocity) {
   if (!finite(pose) || !velocity.allFinite()) return;
   setObjectQpos(pose, velocity);
+  if (m_->eq_active[weld_]) syncWeldReference();  // a placed object stays where it was put
   mj_kinematics(m_, d_);
 }
 

@@ -80,7 +80,8 @@ class Simulation {
   bool objectWelded() const;
 
   /// Puts the object at `pose` (world) with `velocity` [linear; angular],
-  /// world axes. Real-time safe.
+  /// world axes; while welded, the grip is re-taken at the new pose (no snap
+  /// back). Non-finite input is ignored. Real-time safe.
   void placeObject(const Eigen::Isometry3d& pose, const Vector6& velocity = Vector6::Zero());
 
   /// Contacts found by the last step (or reset), i.e. at the state the last
@@ -116,6 +117,7 @@ class Simulation {
 
   void release();
   void resolveNames(const std::string& source);
+  void syncWeldReference();
   void setObjectQpos(const Eigen::Isometry3d& pose, const Vector6& velocity);
 
   SimOptions options_;

@@ -117,6 +117,12 @@ TEST(ObjectWeld, SwitchingOnTwiceOrAfterResetStillMatchesTheCurrentPose) {
   sim.placeObject(test::pose(0.5, -0.25, 0.25, 0, 0.7, 0));
   sim.setObjectWeld(true);
   EXPECT_LT(test::equalityResidual(sim), 1e-6);
+  // placing while welded re-takes the grip where the object was put
+  const Eigen::Isometry3d moved = test::pose(0.55, -0.22, 0.28, 0.1, 0.2, 0.3);
+  sim.placeObject(moved);
+  EXPECT_LT(test::equalityResidual(sim), 1e-6);
+  for (int i = 0; i < 200; ++i) sim.step();
+  EXPECT_LT((sim.object().pose.translation() - moved.translation()).norm(), 1e-3);
   sim.reset(test::readyPosture(), 0.08);
   EXPECT_FALSE(sim.objectWelded());
 }
