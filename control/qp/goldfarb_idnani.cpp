@@ -125,30 +125,39 @@ bool GoldfarbIdnaniSolver::factorize() {
   const Eigen::MatrixXd& H = p_->H;
   const double dmax = H.diagonal().maxCoeff();
   if (!(dmax > 0.0)) return false;
-  // H = L L' (lower), column by column
+  // H = L L' (lower), right-looking so every inner loop runs down a column
   for (int j = 0; j < n; ++j) {
-    double diag = H(j, j);
-    for (int k = 0; k < j; ++k) diag -= L_(j, k) * L_(j, k);
+    const double* h = H.col(j).data();
+    double* l = L_.col(j).data();
+    for (int i = j; i < n; ++i) l[i] = h[i];
+  }
+  for (int j = 0; j < n; ++j) {
+    double* lj = L_.col(j).data();
+    const double diag = lj[j];
     if (!(diag > kPivot * dmax)) return false;
     const double ljj = std::sqrt(diag);
-    L_(j, j) = ljj;
-    for (int i = j + 1; i < n; ++i) {
-      double v = H(i, j);
-      for (int k = 0; k < j; ++k) v -= L_(i, k) * L_(j, k);
-      L_(i, j) = v / ljj;
+    const double inv = 1.0 / ljj;
+    lj[j] = ljj;
+    for (int i = j + 1; i < n; ++i) lj[i] *= inv;
+    for (int k = j + 1; k < n; ++k) {
+      double* lk = L_.col(k).data();
+      const double f = lj[k];
+      for (int i = k; i < n; ++i) lk[i] -= f * lj[i];
     }
   }
   // J0 = L^-T, upper triangular: solve L' J0 = I column by column
   double frob = 0.0;
   for (int j = 0; j < n; ++j) {
-    for (int i = j + 1; i < n; ++i) J0_(i, j) = 0.0;
-    J0_(j, j) = 1.0 / L_(j, j);
+    double* jc = J0_.col(j).data();
+    for (int i = j + 1; i < n; ++i) jc[i] = 0.0;
+    jc[j] = 1.0 / L_(j, j);
     for (int i = j - 1; i >= 0; --i) {
+      const double* li = L_.col(i).data();
       double v = 0.0;
-      for (int k = i + 1; k <= j; ++k) v -= L_(k, i) * J0_(k, j);
-      J0_(i, j) = v / L_(i, i);
+      for (int k = i + 1; k <= j; ++k) v -= li[k] * jc[k];
+      jc[i] = v / li[i];
     }
-    for (int i = 0; i <= j; ++i) frob += J0_(i, j) * J0_(i, j);
+    for (int i = 0; i <= j; ++i) frob += jc[i] * jc[i];
   }
   j_norm_ = std::sqrt(frob);
   // unconstrained minimum x0 = -H^-1 g = -J0 J0' g
