@@ -24,6 +24,10 @@ struct ShapeSpec {
   enum class Kind { kSegment, kBox };
   Kind kind = Kind::kSegment;
   double length = 0.0;             ///< segment: full length along z, m (>= 0)
+  /// segment: the capsule radius around it, m (>= 0). Only conditions GJK
+  /// against boxes (a rounded segment converges to ~1e-8 m, a bare one can
+  /// stall at ~1e-4 m); results are always core (segment) distances.
+  double radius = 0.0;
   Vector3 size = Vector3::Zero();  ///< box: full edge lengths, m (> 0)
 };
 
@@ -54,6 +58,7 @@ class ShapeDistance {
   void compute(int i, const Isometry& Xi, int j, const Isometry& Xj, ShapeDistanceResult& out) const;
 
  private:
+  void segmentBox(int seg, const Isometry& Xs, int box, const Isometry& Xb, double& d, Vector3& ps, Vector3& pb) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

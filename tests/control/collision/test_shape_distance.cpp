@@ -53,6 +53,21 @@ double segmentBox(const Vector3& a, const Vector3& b, const Isometry& X, const V
   return pointBox(a + 0.5 * (lo + hi) * (b - a), X, size);
 }
 
+ShapeSpec segment(double radius = 0.0) {
+  ShapeSpec s;
+  s.kind = ShapeSpec::Kind::kSegment;
+  s.length = 1.0;
+  s.radius = radius;
+  return s;
+}
+
+ShapeSpec box(const Vector3& size) {
+  ShapeSpec s;
+  s.kind = ShapeSpec::Kind::kBox;
+  s.size = size;
+  return s;
+}
+
 Isometry randomPose(std::mt19937& rng) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   Isometry X = Isometry::Identity();
@@ -66,7 +81,7 @@ Isometry randomPose(std::mt19937& rng) {
 TEST(ShapeDistance, SegmentSegmentMatchesClosedForm) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-0.4, 0.4);
-  ShapeDistance sd({ShapeSpec{ShapeSpec::Kind::kSegment, 1.0, {}}, ShapeSpec{ShapeSpec::Kind::kSegment, 1.0, {}}});
+  ShapeDistance sd({segment(), segment()});
   int checked = 0;
   for (int i = 0; i < 500; ++i) {
     const Vector3 p0(u(rng), u(rng), u(rng)), p1(u(rng), u(rng), u(rng));
@@ -93,8 +108,9 @@ TEST(ShapeDistance, SegmentBoxMatchesLineSearch) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-0.5, 0.5);
   const Vector3 size(0.3, 0.2, 0.1);
-  ShapeDistance sd({ShapeSpec{ShapeSpec::Kind::kSegment, 1.0, {}}, ShapeSpec{ShapeSpec::Kind::kBox, 0.0, size}});
-  int separated = 0;
+  const double radius = 0.04;
+  ShapeDistance sd({segment(radius), box(size)});
+  int separated = 0, close = 0;
   for (int i = 0; i < 300; ++i) {
     const Vector3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
     const Isometry box = randomPose(rng);
@@ -106,17 +122,22 @@ TEST(ShapeDistance, SegmentBoxMatchesLineSearch) {
       EXPECT_LT(r.distance, 1e-4);  // overlapping or touching
       continue;
     }
-    ++separated;
     ASSERT_TRUE(r.separated) << "case " << i;
-    EXPECT_NEAR(r.distance, expected, 1e-7) << "case " << i;
-    EXPECT_NEAR(pointSegment(r.p1, a, b), 0.0, 1e-7);
-    EXPECT_NEAR(pointBox(r.p2, box, size), 0.0, 1e-7);
+    // the capsule is clear of the box: GJK on the rounded shape is precise;
+    // closer than the radius the bare segment's GJK is used (coarser)
+    const double tol = expected > radius ? 1e-7 : 2e-4;
+    (expected > radius ? separated : close)++;
+    EXPECT_NEAR(r.distance, expected, tol) << "case " << i;
+    EXPECT_NEAR(pointSegment(r.p1, a, b), 0.0, tol);
+    EXPECT_NEAR(pointBox(r.p2, box, size), 0.0, tol);
+    EXPECT_NEAR((r.p1 - r.p2).norm(), r.distance, tol);
   }
   EXPECT_GT(separated, 100);
+  EXPECT_GT(close, 3);
 }
 
 TEST(ShapeDistance, OverlapIsReportedNotCrashed) {
-  ShapeDistance sd({ShapeSpec{ShapeSpec::Kind::kSegment, 0.2, {}}, ShapeSpec{ShapeSpec::Kind::kBox, 0.0, Vector3(1, 1, 1)}});
+  ShapeDistance sd({segment(), box(Vector3(1, 1, 1))});
   ShapeDistanceResult r;
   sd.compute(0, Isometry::Identity(), 1, Isometry::Identity(), r);
   EXPECT_FALSE(r.separated);

@@ -1,0 +1,199 @@
+// The velocity-damper rows: their algebra, automatic damping, and a kinematic
+// simulation in which the rows keep every distance above sDist.
+#include <gtest/gtest.h>
+
+#include "collision_test_util.hpp"
+#include "config/input_error.hpp"
+#include "control/constraints/collision_constraint.hpp"
+
+using namespace handover::control;
+using namespace handover::control::testing;
+
+namespace {
+
+// min ||x - x_des||^2 s.t. C x >= lb, by Hildreth's dual coordinate ascent
+// (a tiny dense QP, independent of control/qp).
+Vector7 project(const Vector7& x_des, const Eigen::MatrixXd& C, const Eigen::VectorXd& lb, int rows) {
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(rows);
+  Vector7 x = x_des;
+  for (int it = 0; it < 20000; ++it) {
+    double change = 0.0;
+    for (int i = 0; i < rows; ++i) {
+      const RowVector7 a = C.row(i).head<7>();
+      const double step = (lb[i] - a.dot(x)) / a.squaredNorm();
+      const double nl = std::max(0.0, lambda[i] + step);
+      x += (nl - lambda[i]) * a.transpose();
+      change = std::max(change, std::abs(nl - lambda[i]));
+      lambda[i] = nl;
+    }
+    if (change < 1e-12) break;
+  }
+  return x;
+}
+
+struct Sim {
+  const Model& m = pandaModel();
+  Data data{m};
+  CollisionConstraint constraint;
+  Eigen::MatrixXd C;
+  Eigen::VectorXd lb, ub, chi_lb, chi_ub;
+  ControlContext ctx;
+  Vector7 last_q = Vector7::Zero();  ///< where the last run() ended
+
+  explicit Sim(const CollisionConfig& cfg) : constraint(m, cfg) {
+    C.resize(constraint.maxRows(), kNumVars);
+    lb.resize(constraint.maxRows());
+    ub.resize(constraint.maxRows());
+    chi_lb = Eigen::VectorXd::Constant(kNumVars, -1e9);
+    chi_ub = Eigen::VectorXd::Constant(kNumVars, 1e9);
+    ctx.model = &m;
+    ctx.data = &data;
+    ctx.dt = 1e-3;
+  }
+  int rows(const Vector7& q, const Vector7& v) {
+    computeAll(m, data, q, v);
+    return constraint.compute(ctx, C, lb, ub, chi_lb, chi_ub);
+  }
+  // smallest distance over active pairs of `rule` (after rows())
+  double minDistance(int rule) const {
+    double d = 1e9;
+    const auto& cm = constraint.collisionModel();
+    for (int k = 0; k < cm.numPairs(); ++k)
+      if (constraint.collisionData().results[k].active && cm.pairs[k].rule == rule)
+        d = std::min(d, constraint.collisionData().results[k].distance);
+    return d;
+  }
+  // joint PD toward q_goal, projected onto the damper rows if `constrained`
+  double run(Vector7 q, const Vector7& q_goal, bool constrained, int rule, double seconds) {
+    Vector7 v = Vector7::Zero();
+    double min_d = 1e9;
+    const double kp = 60.0, kd = 2.0 * std::sqrt(kp);
+    for (int step = 0; step < static_cast<int>(seconds / ctx.dt); ++step) {
+      const int n = rows(q, v);
+      min_d = std::min(min_d, minDistance(rule));
+      Vector7 qdd = kp * (q_goal - q) - kd * v;
+      if (constrained && n > 0) qdd = project(qdd, C, lb, n);
+      v += ctx.dt * qdd;
+      q += ctx.dt * v;
+    }
+    rows(q, v);
+    last_q = q;
+    return std::min(min_d, minDistance(rule));
+  }
+};
+
+CollisionConfig tableConfig(const std::string& damping) {
+  return parseCollisionConfig("pairs:\n  - {name: table, robot: [panda_link5*, panda_link6, panda_link7*, panda_hand*], "
+                              "other: table, damping: " + damping + "}\n",
+                              "table.yaml");
+}
+
+// a pose that reaches forward and down: its hand is well below the table top
+Vector7 intoTheTable() {
+  Vector7 q;
+  q << 0.0, 1.3, 0.0, -1.0, 0.0, 2.2, M_PI / 4;
+  return q;
+}
+
+}  // namespace
+
+TEST(DamperBound, RowAlgebraAcceptsExactlyTheAdmissibleAccelerations) {
+  DamperSettings s;  // iDist 0.05, sDist 0.01
+  const double d = 0.03, d_dot = -0.2, drift = 0.7, xi = 0.5, dt = 1e-3;
+  const double lb = damperLowerBound(d, d_dot, drift, xi, s, dt);
+  const double bound = -xi * (d - s.s_dist) / (s.i_dist - s.s_dist);
+  for (double jq : {lb - 1.0, lb - 1e-6, lb, lb + 1e-6, lb + 1.0}) {
+    const bool accepted = jq >= lb;
+    const double next_rate = d_dot + dt * (jq + drift);  // d_dot after one step with Jd qddot = jq
+    EXPECT_EQ(accepted, next_rate >= bound - 1e-12) << jq;
+  }
+  // at sDist the next rate may not be negative; below it the rows push away
+  EXPECT_NEAR(damperLowerBound(s.s_dist, 0.0, 0.0, xi, s, dt), 0.0, 1e-12);
+  EXPECT_GT(damperLowerBound(0.5 * s.s_dist, 0.0, 0.0, xi, s, dt), 0.0);
+}
+
+TEST(CollisionConstraint, RowsMatchThePairsInsideTheirInteractionDistance) {
+  Sim sim(tableConfig("auto"));
+  std::mt19937 rng(4);
+  int checked = 0, admissible = 0;
+  for (int trial = 0; trial < 400 && admissible < 10; ++trial) {
+    const Vector7 q = randomConfiguration(sim.m, rng), v = randomVelocity(rng);
+    const int n = sim.rows(q, v);
+    const auto& cm = sim.constraint.collisionModel();
+    const auto& cd = sim.constraint.collisionData();
+    int inside = 0;
+    for (int k = 0; k < cm.numPairs(); ++k)
+      if (cd.results[k].active && cd.results[k].distance < cm.pairs[k].damper.i_dist) {
+        const PairResult& r = cd.results[k];
+        const DamperState& st = sim.constraint.damperStates()[k];
+        // row `inside` belongs to pair k: same Jacobian, zero on the object's variables
+        EXPECT_TRUE(sim.C.row(inside).head<7>().isApprox(r.jacobian));
+        EXPECT_TRUE(sim.C.row(inside).tail<6>().isZero());
+        EXPECT_TRUE(std::isinf(sim.ub[inside]));
+        // a qddot on the row's boundary gives exactly the damper's next-step rate
+        const Vector7 qdd = r.jacobian.transpose() * sim.lb[inside] / r.jacobian.squaredNorm();
+        EXPECT_NEAR(r.d_dot + sim.ctx.dt * (r.jacobian.dot(qdd) + r.drift), st.bound, 1e-9);
+        // entering with automatic damping: the current rate is admissible
+        // (below sDist the bound turns positive: the rows push the arm away)
+        if (r.distance > cm.pairs[k].damper.s_dist) {
+          EXPECT_GT(r.d_dot, st.bound);
+          ++admissible;
+        } else {
+          EXPECT_GT(st.bound, 0.0);
+        }
+        ++inside;
+        ++checked;
+      }
+    EXPECT_EQ(n, inside);
+  }
+  EXPECT_GE(checked, 10);
+  EXPECT_GE(admissible, 10);
+}
+
+TEST(CollisionConstraint, KeepsTheTableDistanceAboveSafety) {
+  const Vector7 q0 = readyPose();
+  for (const std::string damping : {"auto", "0.5"}) {
+    Sim free_sim(tableConfig(damping)), safe_sim(tableConfig(damping));
+    const int rule = safe_sim.constraint.collisionModel().ruleIndex("table");
+    const double s_dist = safe_sim.constraint.collisionModel().pairs[0].damper.s_dist;
+    const double unconstrained = free_sim.run(q0, intoTheTable(), false, rule, 2.0);
+    const double constrained = safe_sim.run(q0, intoTheTable(), true, rule, 2.0);
+    EXPECT_LT(unconstrained, 0.0) << "the goal must drive the arm into the table for this test to mean anything";
+    EXPECT_GE(constrained, s_dist - 1e-4) << "damping " << damping;
+    EXPECT_LT(constrained, s_dist + 0.01) << "the arm should still get close to the table";
+  }
+}
+
+TEST(CollisionConstraint, KeepsThePersonsForearmAwayAndRelaxesOnRequest) {
+  const CollisionConfig cfg = parseCollisionConfig(R"(
+person: {margin: 0.02}
+pairs:
+  - {name: person_arm, robot: [panda_link5*, panda_link6, panda_link7*, panda_hand*], other: human_forearm}
+)", "person.yaml");
+  const Vector7 q0 = readyPose();
+  // a forearm lying across the path of the hand toward the table
+  CollisionEnvironment env;
+  env.person_valid = true;
+  env.forearm.translation() = Vector3(0.5, -0.25, 0.2);
+  env.forearm.linear() = Quaternion::FromTwoVectors(Vector3::UnitZ(), Vector3::UnitY()).toRotationMatrix();
+  env.forearm_length = 0.5;
+
+  Sim free_sim(cfg), safe_sim(cfg), relaxed(cfg);
+  for (Sim* s : {&free_sim, &safe_sim, &relaxed}) s->constraint.setEnvironment(env);
+  const int rule = safe_sim.constraint.collisionModel().ruleIndex("person_arm");
+  const double s_dist = 0.01;
+  const double unconstrained = free_sim.run(q0, intoTheTable(), false, rule, 2.0);
+  const double constrained = safe_sim.run(q0, intoTheTable(), true, rule, 2.0);
+  EXPECT_LT(unconstrained, 0.0);
+  EXPECT_GE(constrained, s_dist - 1e-4);
+
+  // where the constrained run stopped, next to the forearm, the rule gives rows
+  // until it is switched off by name
+  EXPECT_GT(relaxed.rows(safe_sim.last_q, Vector7::Zero()), 0);
+  relaxed.constraint.setRuleEnabled("person_arm", false);
+  EXPECT_FALSE(relaxed.constraint.ruleEnabled(rule));
+  EXPECT_EQ(relaxed.rows(safe_sim.last_q, Vector7::Zero()), 0);
+  relaxed.constraint.setRuleEnabled("person_arm", true);
+  EXPECT_GT(relaxed.rows(safe_sim.last_q, Vector7::Zero()), 0);
+  EXPECT_THROW(relaxed.constraint.setRuleEnabled("no_such_rule", false), handover::InputError);
+}

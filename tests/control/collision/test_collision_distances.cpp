@@ -1,0 +1,254 @@
+// Distances, Jacobian rows and drifts checked against numerical
+// differentiation (Crocoddyl style) for robot-table, robot-person and
+// robot-robot pairs at random configurations.
+#include <gtest/gtest.h>
+
+#include "collision_test_util.hpp"
+#include "control/collision/collision_distances.hpp"
+
+using namespace handover::control;
+using namespace handover::control::testing;
+
+namespace {
+
+enum class Kind { kTable, kPerson, kRobot };
+
+struct Fixture {
+  const Model& m = pandaModel();
+  CollisionModel cm = buildCollisionModel(m, wideConfig());
+  CollisionData cd{cm};
+  Data data{m};
+
+  Kind kindOf(int k) const {
+    const CollisionBody& o = cm.bodies[cm.pairs[k].other_body];
+    return o.isRobot() ? Kind::kRobot : o.isPerson() ? Kind::kPerson : Kind::kTable;
+  }
+  const PairResult& at(const Vector7& q, const Vector7& v, const CollisionEnvironment& env, int k) {
+    forwardKinematics(m, data, q, v);
+    updateCollisions(cm, cd, m, data, env);
+    return cd.results[k];
+  }
+  // usable for differentiation: separated cores, not touching the surfaces
+  bool smooth(const PairResult& r) const { return r.active && !r.penetrating && r.core_distance > 5e-3; }
+};
+
+}  // namespace
+
+TEST(CollisionDistances, JacobianMatchesFiniteDifferenceOfDistance) {
+  Fixture f;
+  std::mt19937 rng(42);
+  int tested[3] = {0, 0, 0};
+  const double h = 1e-6;
+  for (int trial = 0; trial < 25; ++trial) {
+    const Vector7 q = randomConfiguration(f.m, rng);
+    forwardKinematics(f.m, f.data, q, Vector7::Zero());
+    const Vector3 tcp = framePlacement(f.m, f.data, f.m.frameId("tcp")).translation();
+    const CollisionEnvironment env = personAt(tcp + Vector3(0.15, 0.05, 0.0), rng);
+    updateCollisions(f.cm, f.cd, f.m, f.data, env);
+    const std::vector<PairResult> base = f.cd.results;
+    for (int k = 0; k < f.cm.numPairs(); ++k) {
+      const PairResult& r0 = base[k];
+      if (!f.smooth(r0)) continue;
+      // geometry of the result itself
+      EXPECT_NEAR(r0.normal.norm(), 1.0, 1e-12);
+      const double surface_gap = r0.distance + f.cm.pairs[k].margin;
+      EXPECT_NEAR((r0.p_robot - r0.p_other).dot(r0.normal), surface_gap, 1e-9);
+      EXPECT_NEAR((r0.c_robot - r0.c_other).norm(), r0.core_distance, 1e-9);
+      RowVector7 fd;
+      for (int i = 0; i < kArmDofs; ++i) {
+        Vector7 dq = Vector7::Zero();
+        dq[i] = h;
+        const double dp = f.at(q + dq, Vector7::Zero(), env, k).distance;
+        const double dm = f.at(q - dq, Vector7::Zero(), env, k).distance;
+        fd[i] = (dp - dm) / (2 * h);
+      }
+      EXPECT_LT((fd - r0.jacobian).cwiseAbs().maxCoeff(), 2e-6)
+          << f.cm.pairLabel(k) << "\n fd " << fd << "\n J  " << r0.jacobian;
+      ++tested[static_cast<int>(f.kindOf(k))];
+    }
+  }
+  EXPECT_GT(tested[0], 50);
+  EXPECT_GT(tested[1], 50);
+  EXPECT_GT(tested[2], 50);
+}
+
+TEST(CollisionDistances, DistanceRateMatchesTimeDerivativeIncludingPersonMotion) {
+  Fixture f;
+  std::mt19937 rng(5);
+  const double h = 1e-6;
+  int tested = 0;
+  for (int trial = 0; trial < 10; ++trial) {
+    const Vector7 q = randomConfiguration(f.m, rng), v = randomVelocity(rng);
+    forwardKinematics(f.m, f.data, q, v);
+    const Vector3 tcp = framePlacement(f.m, f.data, f.m.frameId("tcp")).translation();
+    CollisionEnvironment env = personAt(tcp + Vector3(0.12, 0.0, 0.05), rng);
+    const Vector3 w(0.3, -0.5, 0.8), lin(-0.4, 0.2, 0.1);  // person segments' twists
+    env.hand_velocity << lin, w;
+    env.forearm_velocity << lin, -w;
+    env.upper_arm_velocity << -lin, w;
+    // the person at time t: each frame moves with its own constant twist
+    auto moved = [&](double t) {
+      CollisionEnvironment e = env;
+      auto step = [t](Isometry& X, const Vector6& tw) {
+        X.translation() += t * tw.head<3>();
+        X.linear() = Eigen::AngleAxisd(t * tw.tail<3>().norm(), tw.tail<3>().normalized()).toRotationMatrix() * X.linear();
+      };
+      step(e.hand, env.hand_velocity);
+      step(e.forearm, env.forearm_velocity);
+      step(e.upper_arm, env.upper_arm_velocity);
+      return e;
+    };
+    updateCollisions(f.cm, f.cd, f.m, f.data, env);
+    const std::vector<PairResult> base = f.cd.results;
+    for (int k = 0; k < f.cm.numPairs(); ++k) {
+      if (!f.smooth(base[k]) || f.kindOf(k) != Kind::kPerson) continue;
+      const double dp = f.at(q + h * v, v, moved(h), k).distance;
+      const double dm = f.at(q - h * v, v, moved(-h), k).distance;
+      EXPECT_NEAR(base[k].d_dot, (dp - dm) / (2 * h), 2e-6) << f.cm.pairLabel(k);
+      ++tested;
+    }
+  }
+  EXPECT_GT(tested, 30);
+}
+
+// For the point-to-point model (core points frozen on their bodies), the
+// drift is the time derivative of Jd(q) along qdot: d_ddot = Jd qddot + drift.
+TEST(CollisionDistances, DriftMatchesFiniteDifferenceOfJacobianForPointPairs) {
+  Fixture f;
+  std::mt19937 rng(9);
+  const double h = 1e-6;
+  int tested[3] = {0, 0, 0};
+  Data scratch(f.m);
+  for (int trial = 0; trial < 25; ++trial) {
+    const Vector7 q = randomConfiguration(f.m, rng), v = randomVelocity(rng, 1.5);
+    forwardKinematics(f.m, f.data, q, v);
+    const Vector3 tcp = framePlacement(f.m, f.data, f.m.frameId("tcp")).translation();
+    const CollisionEnvironment env = personAt(tcp + Vector3(0.15, -0.05, 0.0), rng);
+    updateCollisions(f.cm, f.cd, f.m, f.data, env);
+    for (int k = 0; k < f.cm.numPairs(); ++k) {
+      const PairResult r = f.cd.results[k];
+      const Kind kind = f.kindOf(k);
+      if (!f.smooth(r) || kind == Kind::kTable) continue;
+      const CollisionBody& a = f.cm.bodies[f.cm.pairs[k].robot_body];
+      const CollisionBody& o = f.cm.bodies[f.cm.pairs[k].other_body];
+      if (o.shape.kind == ShapeSpec::Kind::kBox) continue;  // face contacts use the box's normal (next test)
+      const Vector3 l1 = f.data.oMb[a.body].inverse() * r.c_robot;
+      const Vector3 l2 = o.isRobot() ? Vector3(f.data.oMb[o.body].inverse() * r.c_other) : r.c_other;
+      auto jd = [&](const Vector7& qq) {
+        forwardKinematics(f.m, scratch, qq, Vector7::Zero());
+        const Vector3 c1 = scratch.oMb[a.body] * l1;
+        const Vector3 c2 = o.isRobot() ? Vector3(scratch.oMb[o.body] * l2) : l2;
+        const Vector3 n = (c1 - c2).normalized();
+        Matrix3x7 J1, J2 = Matrix3x7::Zero();
+        pointJacobian(f.m, scratch, a.body, c1, J1);
+        if (o.isRobot()) pointJacobian(f.m, scratch, o.body, c2, J2);
+        return RowVector7(n.transpose() * (J1 - J2));
+      };
+      const double fd = (jd(q + h * v) - jd(q - h * v)).dot(v) / (2 * h);
+      EXPECT_NEAR(r.drift, fd, 1e-5 * (1.0 + std::abs(fd))) << f.cm.pairLabel(k);
+      ++tested[static_cast<int>(kind)];
+    }
+  }
+  EXPECT_GT(tested[1], 30);
+  EXPECT_GT(tested[2], 30);
+}
+
+// Robot capsule end above the table top: the true distance is a height, so
+// d(q(t)) for q(t) = q + t v + t^2/2 a must have d_ddot = Jd a + drift, and
+// drift = d/dt (Jd(q)) v with the witness points recomputed by FCL.
+TEST(CollisionDistances, TableDriftIsExactSecondDerivative) {
+  Fixture f;
+  std::mt19937 rng(21);
+  const double h = 1e-4;
+  int tested = 0;
+  const CollisionBody& table = f.cm.bodies[f.cm.table];
+  for (int trial = 0; trial < 40; ++trial) {
+    const Vector7 q = randomConfiguration(f.m, rng), v = randomVelocity(rng), acc = randomVelocity(rng, 3.0);
+    forwardKinematics(f.m, f.data, q, v);
+    updateCollisions(f.cm, f.cd, f.m, f.data, CollisionEnvironment{});
+    const std::vector<PairResult> base = f.cd.results;
+    for (int k = 0; k < f.cm.numPairs(); ++k) {
+      const PairResult& r = base[k];
+      if (f.kindOf(k) != Kind::kTable || !f.smooth(r)) continue;
+      // witness strictly inside the top face, robot witness at a segment end
+      const Vector3 local = table.local.inverse() * r.c_other;
+      if (std::abs(local.x()) > 0.5 * table.shape.size.x() - 1e-3 ||
+          std::abs(local.y()) > 0.5 * table.shape.size.y() - 1e-3 || local.z() < 0.5 * table.shape.size.z() - 1e-9)
+        continue;
+      EXPECT_NEAR(r.normal.z(), 1.0, 1e-9);
+      const CollisionBody& a = f.cm.bodies[f.cm.pairs[k].robot_body];
+      const Capsule& cap = f.m.capsules[a.capsule];
+      const Vector3 ea = f.data.oMb[a.body] * cap.a, eb = f.data.oMb[a.body] * cap.b;
+      if (std::min((r.c_robot - ea).norm(), (r.c_robot - eb).norm()) > 1e-9) continue;
+
+      auto d = [&](double t) { return f.at(q + t * v + 0.5 * t * t * acc, v, CollisionEnvironment{}, k).distance; };
+      const double second = (d(h) - 2 * d(0) + d(-h)) / (h * h);
+      EXPECT_NEAR(second, r.jacobian.dot(acc) + r.drift, 1e-4 * (1.0 + std::abs(second))) << f.cm.pairLabel(k);
+
+      const double hj = 1e-6;
+      const double jp = f.at(q + hj * v, v, CollisionEnvironment{}, k).jacobian.dot(v);
+      const double jm = f.at(q - hj * v, v, CollisionEnvironment{}, k).jacobian.dot(v);
+      EXPECT_NEAR(r.drift, (jp - jm) / (2 * hj), 1e-5 * (1.0 + std::abs(r.drift))) << f.cm.pairLabel(k);
+      ++tested;
+    }
+  }
+  EXPECT_GT(tested, 20);
+}
+
+TEST(CollisionDistances, BroadPhaseOnlyDropsPairsBeyondReach) {
+  const Model& m = pandaModel();
+  CollisionConfig narrow_cfg = wideConfig();
+  narrow_cfg.broadphase_margin = 0.05;
+  for (auto& p : narrow_cfg.pairs) p.damper.i_dist = 0.05;
+  const CollisionModel narrow = buildCollisionModel(m, narrow_cfg);
+  const CollisionModel wide = buildCollisionModel(m, wideConfig());
+  ASSERT_EQ(narrow.numPairs(), wide.numPairs());
+  CollisionData cn(narrow), cw(wide);
+  Data data(m);
+  std::mt19937 rng(77);
+  int culled = 0, kept = 0;
+  for (int trial = 0; trial < 50; ++trial) {
+    const Vector7 q = randomConfiguration(m, rng);
+    forwardKinematics(m, data, q, Vector7::Zero());
+    const Vector3 tcp = framePlacement(m, data, m.frameId("tcp")).translation();
+    const CollisionEnvironment env = personAt(tcp + Vector3(0.1, 0.0, 0.05), rng);
+    updateCollisions(narrow, cn, m, data, env);
+    updateCollisions(wide, cw, m, data, env);
+    EXPECT_EQ(cn.num_narrow, cn.num_active);
+    for (int k = 0; k < wide.numPairs(); ++k) {
+      ASSERT_TRUE(cw.results[k].active);
+      if (cn.results[k].active) {
+        ++kept;
+        EXPECT_NEAR(cn.results[k].distance, cw.results[k].distance, 1e-12);
+      } else {
+        ++culled;
+        EXPECT_GT(cw.results[k].distance, 0.05 + 0.05) << wide.pairLabel(k);
+      }
+    }
+  }
+  EXPECT_GT(culled, kept);  // most pairs are far most of the time
+  EXPECT_GT(kept, 0);
+}
+
+TEST(CollisionDistances, OverlappingCoresKeepAUsableRow) {
+  Fixture f;
+  forwardKinematics(f.m, f.data, readyPose(), Vector7::Zero());
+  std::mt19937 rng(1);
+  // first a separated person to learn the normal, then the forearm through the hand capsule
+  const Vector3 tcp = framePlacement(f.m, f.data, f.m.frameId("tcp")).translation();
+  CollisionEnvironment env = personAt(tcp + Vector3(0.2, 0.0, 0.0), rng);
+  updateCollisions(f.cm, f.cd, f.m, f.data, env);
+  env.forearm.translation() = tcp - env.forearm.linear() * Vector3(0, 0, 0.5 * env.forearm_length);
+  updateCollisions(f.cm, f.cd, f.m, f.data, env);
+  bool any = false;
+  for (int k = 0; k < f.cm.numPairs(); ++k) {
+    const PairResult& r = f.cd.results[k];
+    if (!r.active || f.cm.bodies[f.cm.pairs[k].other_body].kind != CollisionBodyKind::kHumanForearm) continue;
+    EXPECT_TRUE(std::isfinite(r.distance));
+    EXPECT_TRUE(r.jacobian.allFinite());
+    EXPECT_TRUE(std::isfinite(r.drift));
+    EXPECT_NEAR(r.normal.norm(), 1.0, 1e-9);
+    if (r.distance < 0.0) any = true;
+  }
+  EXPECT_TRUE(any);
+}
