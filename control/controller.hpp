@@ -5,7 +5,9 @@
 //   object with alphadot_obs -> tau = M qddot + h (payload included).
 //
 // Tasks (names): "observation", "tracking", "posture", "pose" (disabled at
-// start). Constraints: "joint_acceleration", "joint_position",
+// start). Keep "observation" on whenever "tracking" is on: the tracking rows
+// also involve alphadot_obs, and without the (much heavier) observation task
+// only the regularisation would stop them from moving the observed object. Constraints: "joint_acceleration", "joint_position",
 // "joint_velocity", "joint_torque"; more (e.g. collision) may be added through
 // formulation(). If the QP fails (any status but optimal) or the inputs hold
 // NaN/inf, the controller falls back to a damped stop
