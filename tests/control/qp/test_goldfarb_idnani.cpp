@@ -104,6 +104,43 @@ INSTANTIATE_TEST_SUITE_P(Sizes, RandomKkt,
                                            SizeCase{20, 5, 60, true, 50},
                                            SizeCase{13, 13, 0, false, 20}));
 
+// Badly scaled data: weighted task terms (weights 1e3 .. 1e-6, condition
+// number ~1e10 like the controller's H with a tiny regularisation) and rows
+// scaled by 1e-3 .. 1e3. The relative KKT residuals must stay as small.
+TEST(GoldfarbIdnani, BadlyScaledProblemsStillSatisfyKkt) {
+  GoldfarbIdnaniSolver solver;
+  for (int seed = 0; seed < 100; ++seed) {
+    std::mt19937 rng(7000 + seed);
+    std::normal_distribution<double> nd(0.0, 1.0);
+    RandomQpSpec spec;
+    spec.n = 13;
+    spec.n_eq = seed % 4;
+    spec.n_in = 30;
+    QpProblem p;
+    makeRandomQp(spec, rng, p);
+    Eigen::MatrixXd Jt = Eigen::MatrixXd::NullaryExpr(6, 13, [&] { return nd(rng); });
+    Eigen::MatrixXd Jo = Eigen::MatrixXd::Zero(6, 13);
+    Jo.rightCols(6).setIdentity();
+    Eigen::MatrixXd Jp = Eigen::MatrixXd::Zero(7, 13);
+    Jp.leftCols(7).setIdentity();
+    p.H = 1000.0 * Jt.transpose() * Jt + Jo.transpose() * Jo + 5.0 * Jp.transpose() * Jp;
+    p.H.diagonal().array() += 1e-6;
+    p.g *= 100.0;
+    const double row_scale = std::pow(10.0, (seed % 7) - 3);  // 1e-3 .. 1e3
+    for (int i = 0; i < p.n_in; ++i) {
+      const double f = i % 2 ? row_scale : 1.0 / row_scale;
+      p.C.row(i) *= f;
+      p.c_lb[i] *= f;
+      p.c_ub[i] *= f;
+    }
+    Eigen::VectorXd x;
+    solver.reserve(p.n, p.capacityEq(), p.capacityIn());
+    ASSERT_EQ(solver.solve(p, x), QpStatus::kOptimal) << seed << " " << solver.result().message;
+    SCOPED_TRACE(seed);
+    expectKkt(p, x, solver.result());
+  }
+}
+
 // ------------------------------------------------------------------ degenerate
 
 QpProblem smallProblem(int n, int cap_eq, int cap_in) {
@@ -272,6 +309,19 @@ TEST(GoldfarbIdnani, FullyActiveDegenerateVertex) {
     EXPECT_LE((x - xs).cwiseAbs().maxCoeff(), 1e-9 * (1.0 + xs.cwiseAbs().maxCoeff()));
     EXPECT_EQ(static_cast<int>(s.result().active.size()), n);
     expectKkt(p, x, s.result());
+    // with all n sides active, a new side that cuts the vertex off must
+    // first push an active one out (the dependent-normal path)
+    QpProblem cut;
+    cut.reserve(n, 0, n + extra + 1);
+    cut.H = p.H;
+    cut.g = p.g;
+    cut.n_in = n + extra + 1;
+    cut.C.topRows(n + extra) = p.C.topRows(n + extra);
+    cut.c_lb.head(n + extra) = p.c_lb.head(n + extra);
+    cut.C.row(n + extra) = p.C.row(0) + 0.3 * p.C.row(1);
+    cut.c_lb[n + extra] = cut.C.row(n + extra).dot(xs) + 0.1;
+    ASSERT_EQ(solveFresh(cut, x, s), QpStatus::kOptimal) << seed << " " << s.result().message;
+    expectKkt(cut, x, s.result());
   }
 }
 
