@@ -585,6 +585,7 @@ QpStatus GoldfarbIdnaniSolver::solve(const QpProblem& problem, Eigen::VectorXd& 
   if (const char* bad = checkProblem()) return finish(QpStatus::kInvalidProblem, bad, x);
   const int n = n_;
   const double tol = options_.tolerance;
+  x_.head(n).setZero();  // what an early infeasible exit reports
 
   // classify rows and bounds; contradicting sides are infeasible outright
   for (int i = 0; i < problem.n_eq; ++i) eq_norm_[i] = problem.A_eq.row(i).norm();

@@ -35,7 +35,9 @@ class QpSolver {
   /// Throws InputError on negative sizes.
   virtual void reserve(int num_vars, int capacity_eq, int capacity_in) = 0;
   /// Solves `problem`; writes x (size problem.n; resized only if it differs)
-  /// and result(). Never throws; failures are reported in the status.
+  /// and result(). Never throws; failures are reported in the status. When
+  /// the status is not kOptimal, x is the last iterate (zero for invalid
+  /// problems) and must not be applied as a command.
   /// Real-time safe after reserve().
   virtual QpStatus solve(const QpProblem& problem, Eigen::VectorXd& x) = 0;
   virtual const QpResult& result() const = 0;
