@@ -64,7 +64,6 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
     b.body = c.body;
     b.shape.kind = ShapeSpec::Kind::kSegment;
     b.shape.length = (c.b - c.a).norm();
-    b.shape.radius = c.radius;
     b.radius = c.radius;
     b.local = segmentFrame(c.a, c.b);
     cm.bodies.push_back(b);
@@ -93,11 +92,9 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
   ShapeSpec seg;
   seg.kind = ShapeSpec::Kind::kSegment;
   seg.length = 0.27;
-  seg.radius = cfg.person.forearm_radius;
   cm.human_forearm = addEnv("human_forearm", CollisionBodyKind::kHumanForearm, seg, cfg.person.forearm_radius,
                             Isometry::Identity());
   seg.length = 0.33;
-  seg.radius = cfg.person.upper_arm_radius;
   cm.human_upper_arm = addEnv("human_upper_arm", CollisionBodyKind::kHumanUpperArm, seg,
                               cfg.person.upper_arm_radius, Isometry::Identity());
 

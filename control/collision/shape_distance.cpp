@@ -11,15 +11,14 @@
 
 namespace handover::control {
 
-// The GJK solver is called directly rather than through fcl::distance(), so
-// its iteration cap can be raised (and no DistanceResult needs clearing).
-// GJK of a bare segment against a box can stall up to 1e-4 m short in
-// degenerate cases; against the rounded capsule it converges to ~1e-8 m, so
-// segment-box queries run on the capsule and convert back to the core,
-// falling back to the bare segment only when the capsule overlaps the box.
+// The GJK solver is called directly rather than through fcl::distance()
+// (no DistanceResult to clear, no dispatch table). GJK of a segment against a
+// box is fast (~0.7 us) but can stall up to 1e-4 m short of the distance in
+// degenerate cases, so its witness is polished exactly afterwards (see
+// segmentBox). GJK against a rounded capsule converges better but is 3-4x
+// slower, because a round cap needs many iterations to reach 1e-9.
 struct ShapeDistance::Impl {
   std::vector<std::unique_ptr<fcl::Capsuled>> segments;  // bare (radius 0); null for boxes
-  std::vector<std::unique_ptr<fcl::Capsuled>> rounded;   // with the spec's radius; null for boxes
   std::vector<std::unique_ptr<fcl::Boxd>> boxes;         // null for segments
   std::vector<ShapeSpec> specs;
   fcl::detail::GJKSolver_indep<double> solver;
@@ -28,16 +27,13 @@ struct ShapeDistance::Impl {
 ShapeDistance::ShapeDistance(const std::vector<ShapeSpec>& shapes) : impl_(std::make_unique<Impl>()) {
   impl_->specs = shapes;
   impl_->segments.resize(shapes.size());
-  impl_->rounded.resize(shapes.size());
   impl_->boxes.resize(shapes.size());
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     const ShapeSpec& s = shapes[i];
     if (s.kind == ShapeSpec::Kind::kSegment) {
       if (!(s.length >= 0.0)) throw InputError("collision shape " + std::to_string(i) + ": segment length must be >= 0");
       // radius 0: the caller owns the radii (see header)
-      if (!(s.radius >= 0.0)) throw InputError("collision shape " + std::to_string(i) + ": radius must be >= 0");
       impl_->segments[i] = std::make_unique<fcl::Capsuled>(0.0, s.length);
-      impl_->rounded[i] = std::make_unique<fcl::Capsuled>(s.radius, s.length);
     } else {
       if (!(s.size.minCoeff() > 0.0))
         throw InputError("collision shape " + std::to_string(i) + ": box edges must be > 0");
@@ -46,7 +42,7 @@ ShapeDistance::ShapeDistance(const std::vector<ShapeSpec>& shapes) : impl_(std::
   }
   // design notes 6: GST_INDEP with tolerance 1e-9; unsigned distances only
   impl_->solver.gjk_tolerance = 1e-9;
-  impl_->solver.gjk_max_iterations = 1000;
+  impl_->solver.gjk_max_iterations = 128;  // bounded work; the polish fixes a stalled answer
   impl_->solver.enable_cached_guess = false;
 }
 
@@ -59,7 +55,6 @@ int ShapeDistance::numShapes() const { return static_cast<int>(impl_->specs.size
 void ShapeDistance::setSegmentLength(int shape, double length) {
   if (!impl_->segments[shape]) return;
   impl_->segments[shape]->lz = length;
-  impl_->rounded[shape]->lz = length;
   impl_->specs[shape].length = length;
 }
 
@@ -68,38 +63,49 @@ double ShapeDistance::segmentLength(int shape) const { return impl_->specs[shape
 void ShapeDistance::segmentBox(int seg, const Isometry& Xs, int box, const Isometry& Xb, double& d, Vector3& ps,
                                Vector3& pb) const {
   const Impl& m = *impl_;
-  const double r = m.rounded[seg]->radius;
-  if (r > 0.0 && m.solver.shapeDistance(*m.rounded[seg], Xs, *m.boxes[box], Xb, &d, &ps, &pb) && d > 0.0) {
-    // back to the core. GJK's distance is good to ~1e-8 m but a witness on
-    // a round cap is not (~1e-5 m), so polish exactly: in the box frame the
-    // squared gap along the segment, f(t) = sum_k max(|p_k(t)| - h_k, 0)^2, is
-    // convex and piecewise quadratic; Newton steps from GJK's point land on
-    // the minimum of the right piece, usually in one step
-    const double half = 0.5 * m.rounded[seg]->lz;
+  if (!m.solver.shapeDistance(*m.segments[seg], Xs, *m.boxes[box], Xb, &d, &ps, &pb) || !(d > 0.0)) {
+    d = -1.0;  // the segment enters the box
+    return;
+  }
+  {
+    // polish: in the box frame the squared gap along the segment,
+    // f(t) = sum_k max(|p_k(t)| - h_k, 0)^2, is convex and piecewise
+    // quadratic; Newton steps from GJK's point land on the minimum of the
+    // right piece, usually in one step
+    const double half = 0.5 * m.segments[seg]->lz;
     const Isometry Xbi = Xb.inverse(Eigen::Isometry);
     const Vector3 c = Xbi * Xs.translation(), u = Xbi.linear() * Xs.linear().col(2);
     const Vector3 h = 0.5 * m.boxes[box]->side;
     double t = std::clamp(u.dot(Xbi * ps - c), -half, half);
-    for (int it = 0; it < 6; ++it) {
-      const Vector3 p = c + t * u;
-      double num = 0.0, den = 0.0;
+    // half the derivative of f, and the gap itself
+    auto slope = [&](double tt, double& den) {
+      const Vector3 p = c + tt * u;
+      double num = 0.0;
+      den = 0.0;
       for (int k = 0; k < 3; ++k) {
-        const double excess = std::abs(p[k]) - h[k];
-        if (excess > 0.0) {
+        if (std::abs(p[k]) > h[k]) {
           num += u[k] * (p[k] - std::copysign(h[k], p[k]));
           den += u[k] * u[k];
         }
       }
+      return num;
+    };
+    auto gap = [&](double tt) {
+      const Vector3 p = c + tt * u;
+      return (p - p.cwiseMax(-h).cwiseMin(h)).norm();
+    };
+    double den = 0.0;
+    for (int it = 0; it < 6; ++it) {
+      const double num = slope(t, den);
       if (den < 1e-300) break;
       const double t_new = std::clamp(t - num / den, -half, half);
       if (std::abs(t_new - t) < 1e-15) break;
       t = t_new;
     }
-    auto gap = [&](double tt) {
-      const Vector3 p = c + tt * u;
-      return (p - p.cwiseMax(-h).cwiseMin(h)).norm();
-    };
-    if (gap(t) > d + r + 1e-9) {
+    // f is C1 and convex: optimal where the slope vanishes or points out of the segment
+    const double g = slope(t, den);
+    const bool optimal = std::abs(g) < 1e-12 || (t <= -half && g >= 0.0) || (t >= half && g <= 0.0);
+    if (!optimal) {
       // Newton cycled between pieces (rare): golden-section search instead
       double lo = -half, hi = half;
       for (int it = 0; it < 80; ++it) {
@@ -116,9 +122,7 @@ void ShapeDistance::segmentBox(int seg, const Isometry& Xs, int box, const Isome
     ps = Xb * p;
     pb = Xb * p.cwiseMax(-h).cwiseMin(h);
     d = (ps - pb).norm();
-    return;
   }
-  m.solver.shapeDistance(*m.segments[seg], Xs, *m.boxes[box], Xb, &d, &ps, &pb);
 }
 
 void ShapeDistance::compute(int i, const Isometry& Xi, int j, const Isometry& Xj, ShapeDistanceResult& out) const {

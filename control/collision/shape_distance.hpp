@@ -24,10 +24,6 @@ struct ShapeSpec {
   enum class Kind { kSegment, kBox };
   Kind kind = Kind::kSegment;
   double length = 0.0;             ///< segment: full length along z, m (>= 0)
-  /// segment: the capsule radius around it, m (>= 0). Only conditions GJK
-  /// against boxes (a rounded segment converges to ~1e-8 m, a bare one can
-  /// stall at ~1e-4 m); results are always core (segment) distances.
-  double radius = 0.0;
   Vector3 size = Vector3::Zero();  ///< box: full edge lengths, m (> 0)
 };
 
@@ -54,7 +50,8 @@ class ShapeDistance {
   double segmentLength(int shape) const;
 
   /// Distance between shape i at canonical pose Xi and shape j at Xj (world).
-  /// Uses GJK (GST_INDEP, tolerance 1e-9); segment-segment is analytic. RT safe.
+  /// Segment-segment is FCL's analytic solution; segment-box is FCL's GJK
+  /// (GST_INDEP, tolerance 1e-9) polished to machine precision. RT safe.
   void compute(int i, const Isometry& Xi, int j, const Isometry& Xj, ShapeDistanceResult& out) const;
 
  private:

@@ -53,11 +53,10 @@ double segmentBox(const Vector3& a, const Vector3& b, const Isometry& X, const V
   return pointBox(a + 0.5 * (lo + hi) * (b - a), X, size);
 }
 
-ShapeSpec segment(double radius = 0.0) {
+ShapeSpec segment() {
   ShapeSpec s;
   s.kind = ShapeSpec::Kind::kSegment;
   s.length = 1.0;
-  s.radius = radius;
   return s;
 }
 
@@ -108,10 +107,9 @@ TEST(ShapeDistance, SegmentBoxMatchesLineSearch) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-0.5, 0.5);
   const Vector3 size(0.3, 0.2, 0.1);
-  const double radius = 0.04;
-  ShapeDistance sd({segment(radius), box(size)});
+  ShapeDistance sd({segment(), box(size)});
   int separated = 0, close = 0;
-  for (int i = 0; i < 300; ++i) {
+  for (int i = 0; i < 2000; ++i) {
     const Vector3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng));
     const Isometry box = randomPose(rng);
     sd.setSegmentLength(0, (b - a).norm());
@@ -123,10 +121,9 @@ TEST(ShapeDistance, SegmentBoxMatchesLineSearch) {
       continue;
     }
     ASSERT_TRUE(r.separated) << "case " << i;
-    // the capsule is clear of the box: GJK on the rounded shape is precise;
-    // closer than the radius the bare segment's GJK is used (coarser)
-    const double tol = expected > radius ? 1e-7 : 2e-4;
-    (expected > radius ? separated : close)++;
+    // GJK alone can stall ~1e-4 short here; the polished answer may not
+    const double tol = 1e-9;
+    (expected > 0.04 ? separated : close)++;
     EXPECT_NEAR(r.distance, expected, tol) << "case " << i;
     EXPECT_NEAR(pointSegment(r.p1, a, b), 0.0, tol);
     EXPECT_NEAR(pointBox(r.p2, box, size), 0.0, tol);
