@@ -36,14 +36,31 @@ bool isBoundKind(QpRowKind k) {
 // Givens rotation applied to columns a and b of M (first `rows` rows):
 // [a b] <- [c a + s b, -s a + c b].
 inline void rotateColumns(Eigen::MatrixXd& M, int rows, int a, int b, double c, double s) {
-  double* pa = M.col(a).data();
-  double* pb = M.col(b).data();
+  double* __restrict pa = M.col(a).data();
+  double* __restrict pb = M.col(b).data();
   for (int k = 0; k < rows; ++k) {
     const double t1 = pa[k];
     const double t2 = pb[k];
     pa[k] = c * t1 + s * t2;
     pb[k] = -s * t1 + c * t2;
   }
+}
+
+// True when the rows x cols block at `m` (column-major, leading dimension
+// `ld`) holds only finite numbers: v * 0 is NaN exactly for NaN and +-inf, and
+// the sum has no early exit so the loop vectorises.
+bool allFinite(const double* m, int rows, int cols, Eigen::Index ld) {
+  double acc = 0.0;
+  for (int j = 0; j < cols; ++j) {
+    const double* c = m + j * ld;
+    for (int i = 0; i < rows; ++i) acc += c[i] * 0.0;
+  }
+  return acc == 0.0;
+}
+bool hasNaN(const double* v, int size) {
+  bool nan = false;
+  for (int i = 0; i < size; ++i) nan |= std::isnan(v[i]);
+  return nan;
 }
 
 }  // namespace
@@ -105,14 +122,15 @@ const char* GoldfarbIdnaniSolver::checkProblem() {
   if (p.n_in > 0 && (p.C.cols() != n || p.C.rows() < p.n_in || p.c_lb.size() < p.n_in ||
                      p.c_ub.size() < p.n_in))
     return "C, c_lb or c_ub is smaller than n_in x n";
-  if (!p.H.allFinite() || !p.g.allFinite()) return "H or g contains NaN or inf";
-  if (p.n_eq > 0 &&
-      (!p.A_eq.topRows(p.n_eq).allFinite() || !p.b_eq.head(p.n_eq).allFinite()))
+  if (!allFinite(p.H.data(), n, n, p.H.outerStride()) || !allFinite(p.g.data(), n, 1, n))
+    return "H or g contains NaN or inf";
+  if (p.n_eq > 0 && (!allFinite(p.A_eq.data(), p.n_eq, n, p.A_eq.outerStride()) ||
+                     !allFinite(p.b_eq.data(), p.n_eq, 1, p.n_eq)))
     return "A_eq or b_eq contains NaN or inf";
-  if (p.n_in > 0 && (!p.C.topRows(p.n_in).allFinite() || p.c_lb.head(p.n_in).hasNaN() ||
-                     p.c_ub.head(p.n_in).hasNaN()))
+  if (p.n_in > 0 && (!allFinite(p.C.data(), p.n_in, n, p.C.outerStride()) ||
+                     hasNaN(p.c_lb.data(), p.n_in) || hasNaN(p.c_ub.data(), p.n_in)))
     return "C contains NaN or inf, or c_lb / c_ub contains NaN";
-  if (p.x_lb.hasNaN() || p.x_ub.hasNaN()) return "x_lb or x_ub contains NaN";
+  if (hasNaN(p.x_lb.data(), n) || hasNaN(p.x_ub.data(), n)) return "x_lb or x_ub contains NaN";
   const double hmax = p.H.cwiseAbs().maxCoeff();
   for (int j = 0; j < n; ++j)
     for (int i = j + 1; i < n; ++i)
@@ -132,7 +150,7 @@ bool GoldfarbIdnaniSolver::factorize() {
     for (int i = j; i < n; ++i) l[i] = h[i];
   }
   for (int j = 0; j < n; ++j) {
-    double* lj = L_.col(j).data();
+    double* __restrict lj = L_.col(j).data();
     const double diag = lj[j];
     if (!(diag > kPivot * dmax)) return false;
     const double ljj = std::sqrt(diag);
@@ -140,7 +158,7 @@ bool GoldfarbIdnaniSolver::factorize() {
     lj[j] = ljj;
     for (int i = j + 1; i < n; ++i) lj[i] *= inv;
     for (int k = j + 1; k < n; ++k) {
-      double* lk = L_.col(k).data();
+      double* __restrict lk = L_.col(k).data();
       const double f = lj[k];
       for (int i = k; i < n; ++i) lk[i] -= f * lj[i];
     }
@@ -148,11 +166,11 @@ bool GoldfarbIdnaniSolver::factorize() {
   // J0 = L^-T, upper triangular: solve L' J0 = I column by column
   double frob = 0.0;
   for (int j = 0; j < n; ++j) {
-    double* jc = J0_.col(j).data();
+    double* __restrict jc = J0_.col(j).data();
     for (int i = j + 1; i < n; ++i) jc[i] = 0.0;
     jc[j] = 1.0 / L_(j, j);
     for (int i = j - 1; i >= 0; --i) {
-      const double* li = L_.col(i).data();
+      const double* __restrict li = L_.col(i).data();
       double v = 0.0;
       for (int k = i + 1; k <= j; ++k) v -= li[k] * jc[k];
       jc[i] = v / li[i];
@@ -588,12 +606,21 @@ QpStatus GoldfarbIdnaniSolver::solve(const QpProblem& problem, Eigen::VectorXd& 
   x_.head(n).setZero();  // what an early infeasible exit reports
 
   // classify rows and bounds; contradicting sides are infeasible outright
-  for (int i = 0; i < problem.n_eq; ++i) eq_norm_[i] = problem.A_eq.row(i).norm();
+  // row norms column by column (contiguous reads)
+  eq_norm_.head(problem.n_eq).setZero();
+  row_norm_.head(problem.n_in).setZero();
+  for (int j = 0; j < n; ++j) {
+    const double* a = problem.A_eq.col(j).data();
+    for (int i = 0; i < problem.n_eq; ++i) eq_norm_[i] += a[i] * a[i];
+    const double* c = problem.C.col(j).data();
+    for (int i = 0; i < problem.n_in; ++i) row_norm_[i] += c[i] * c[i];
+  }
+  eq_norm_.head(problem.n_eq) = eq_norm_.head(problem.n_eq).cwiseSqrt();
+  row_norm_.head(problem.n_in) = row_norm_.head(problem.n_in).cwiseSqrt();
   for (int i = 0; i < problem.n_in; ++i) {
     const double lb = problem.c_lb[i];
     const double ub = problem.c_ub[i];
-    const double nrm = problem.C.row(i).norm();
-    row_norm_[i] = nrm;
+    const double nrm = row_norm_[i];
     row_active_lo_[i] = row_active_up_[i] = 0;
     if (lb >= kQpInfinity || ub <= -kQpInfinity)
       return finish(QpStatus::kInfeasible, "a row has c_lb = +inf or c_ub = -inf", x);
