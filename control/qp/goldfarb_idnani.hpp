@@ -8,7 +8,8 @@
 // side is violated. Every iterate is dual feasible, so an infeasible problem is
 // detected as a violated side that no step can reach. It keeps H = L L' and
 // J = L^-T Q, R (the QR factors of L^-1 N for the active normals N) up to date
-// with Givens rotations, never refactorising.
+// with Givens rotations, never refactorising, and finishes with one step of
+// iterative refinement on the final active set.
 //
 // Each finite side of a two-sided row is one constraint (+-inf sides cost one
 // comparison); variable bounds are unit rows whose products are single
@@ -64,6 +65,7 @@ class GoldfarbIdnaniSolver final : public QpSolver {
   bool tryWarmStart();
   bool findMostViolated(QpRowKind& kind, int& index);
   QpStatus dualLoop(const char*& message);
+  void refine();  // one step of iterative refinement on the final active set
   void setActiveFlag(QpRowKind kind, int index, bool on);
 
   QpSolverOptions options_;

@@ -141,6 +141,34 @@ TEST(GoldfarbIdnani, BadlyScaledProblemsStillSatisfyKkt) {
   }
 }
 
+// H with eigenvalues spread over eight decades: the iterate accumulates
+// errors of order eps * cond(H), which the final refinement step must remove.
+TEST(GoldfarbIdnani, IllConditionedHessianStillSatisfiesKkt) {
+  GoldfarbIdnaniSolver solver;
+  for (int seed = 0; seed < 200; ++seed) {
+    std::mt19937 rng(9100 + seed);
+    std::normal_distribution<double> nd(0.0, 1.0);
+    RandomQpSpec spec;
+    spec.n = 2 + seed % 12;
+    spec.n_eq = seed % 3;
+    spec.n_in = 25;
+    QpProblem p;
+    makeRandomQp(spec, rng, p);
+    const int n = spec.n;
+    Eigen::MatrixXd M = Eigen::MatrixXd::NullaryExpr(n, n, [&] { return nd(rng); });
+    const Eigen::MatrixXd Q = Eigen::HouseholderQR<Eigen::MatrixXd>(M).householderQ();
+    Eigen::VectorXd ev(n);
+    for (int j = 0; j < n; ++j) ev[j] = std::pow(10.0, -4.0 + 8.0 * j / (n - 1));
+    p.H = Q * ev.asDiagonal() * Q.transpose();
+    p.H = (0.5 * (p.H + p.H.transpose())).eval();
+    Eigen::VectorXd x;
+    solver.reserve(p.n, p.capacityEq(), p.capacityIn());
+    ASSERT_EQ(solver.solve(p, x), QpStatus::kOptimal) << seed << " " << solver.result().message;
+    SCOPED_TRACE(seed);
+    expectKkt(p, x, solver.result());
+  }
+}
+
 // ------------------------------------------------------------------ degenerate
 
 QpProblem smallProblem(int n, int cap_eq, int cap_in) {
