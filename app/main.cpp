@@ -1,19 +1,132 @@
 // The `handover` command line (design notes section 3). Exit codes: 0 = ran
 // and expectations held, 1 = ran and an expectation failed, 2 = bad input or
 // a fault before the run could start.
+#include <cstdio>
+#include <filesystem>
+#include <map>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
+#include <unistd.h>
 
+#include "app/batch/batch_runner.hpp"
 #include "app/hold_posture.hpp"
+#include "app/plot_runner.hpp"
+#include "app/run/run_scenario.hpp"
 #include "config/input_error.hpp"
+#include "scenes/scenario/scenario_parser.hpp"
+
+namespace {
+
+using namespace handover;
+
+int runCommand(const std::string& file, std::string out_dir, const std::string& video, bool view, bool quiet,
+               int log_every_ms) {
+  const scenario::Scenario sc = scenario::parseScenario(file);
+  if (out_dir.empty()) out_dir = "out/" + sc.name;
+  app::RunOptions ro;
+  ro.out_dir = out_dir;
+  ro.video_path = video;
+  ro.view = view;
+  ro.log_every_ms = log_every_ms;
+  if (!quiet && isatty(STDERR_FILENO)) {
+    ro.progress = [](double t, double duration) {
+      std::fprintf(stderr, "\rsimulating %5.1f / %.1f s", t, duration);
+    };
+  }
+  const app::RunSummary r = app::runScenario(sc, ro);
+  if (ro.progress) std::fprintf(stderr, "\r%40s\r", "");
+  int plot_status = 0;
+  if (log_every_ms > 0) plot_status = app::drawPlots(out_dir, quiet);
+  std::cout << app::formatSummary(r);
+  std::cout << "files      " << out_dir << "/summary.json, log.csv" << (plot_status == 0 ? ", *.png" : "")
+            << (video.empty() ? "" : ", " + video) << "\n";
+  if (plot_status != 0) std::cerr << "handover: warning: plots not drawn (exit " << plot_status << ")\n";
+  if (r.outcome == "error") return 2;
+  return r.expectation_failures.empty() ? 0 : 1;
+}
+
+int batchCommand(const app::BatchOptions& opt, bool quiet) {
+  const std::vector<app::BatchEntry> entries = app::runBatch(opt, std::cerr);
+  int failed = 0, errors = 0;
+  std::map<std::string, int> outcomes;
+  for (const auto& e : entries) {
+    ++outcomes[e.summary.outcome];
+    failed += e.summary.expectation_failures.empty() ? 0 : 1;
+    errors += e.summary.outcome == "error" ? 1 : 0;
+    if (!quiet && !e.summary.expectation_failures.empty()) {
+      std::cout << e.summary.scenario << ": " << e.summary.expectation_failures.front() << "\n";
+    }
+    if (!e.summary.error_message.empty()) std::cerr << e.summary.scenario << ": error: " << e.summary.error_message << "\n";
+  }
+  std::cout << entries.size() << " runs:";
+  for (const auto& [o, n] : outcomes) std::cout << " " << o << " " << n;
+  std::cout << "; " << failed << " with unmet expectations\n";
+  std::cout << "files      " << opt.out_dir << "/results.csv, summary.json\n";
+  if (errors) return 2;
+  return failed ? 1 : 0;
+}
+
+int checkCommand(const std::vector<std::string>& files) {
+  int bad = 0;
+  for (const auto& f : files) {
+    try {
+      const scenario::Scenario sc = scenario::parseScenario(f);
+      std::cout << f << ": ok (" << sc.name << ", " << scenario::toString(sc.mode) << ", " << sc.human.script.size()
+                << " steps)\n";
+    } catch (const InputError& e) {
+      std::cerr << e.what() << "\n";
+      ++bad;
+    }
+  }
+  return bad ? 2 : 0;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
-  using namespace handover;
   CLI::App cli{"Handover: a task-space QP controller that takes objects from and gives objects to a person"};
   cli.require_subcommand(1);
 
+  // run
+  std::string run_file, run_out, run_video;
+  bool run_view = false, run_quiet = false;
+  int log_every = 5;
+  CLI::App* run_cmd = cli.add_subcommand("run", "run one scenario in the simulator");
+  run_cmd->add_option("scenario", run_file, "scenario file (YAML)")->required();
+  run_cmd->add_option("--out", run_out, "output folder (default out/<scenario name>)");
+  run_cmd->add_option("--video", run_video, "record an MP4 (headless)");
+  run_cmd->add_flag("--view", run_view, "open the interactive viewer (needs a display)");
+  run_cmd->add_flag("--quiet", run_quiet, "no progress, no plot messages");
+  run_cmd->add_option("--log-every", log_every, "log.csv row period in ms (0 = no log, no plots)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
+
+  // batch
+  app::BatchOptions batch;
+  bool batch_quiet = false;
+  CLI::App* batch_cmd = cli.add_subcommand("batch", "run many scenarios in parallel");
+  batch_cmd->add_option("scenarios", batch.files, "scenario files")->required();
+  batch_cmd->add_option("--jobs,-j", batch.jobs, "parallel runs")->capture_default_str()->check(CLI::Range(1, 64));
+  batch_cmd->add_option("--out", batch.out_dir, "output folder")->capture_default_str();
+  batch_cmd->add_option("--vary", batch.vary, "randomized variants of each scenario (reproducible seeds)")
+      ->check(CLI::Range(0, 100000));
+  batch_cmd->add_flag("--runs", batch.per_run_files, "also write each run's summary.json and log.csv");
+  batch_cmd->add_flag("--quiet", batch_quiet, "no progress bar");
+
+  // check
+  std::vector<std::string> check_files;
+  CLI::App* check_cmd = cli.add_subcommand("check", "validate scenario files without running them");
+  check_cmd->add_option("scenarios", check_files, "scenario files")->required();
+
+  // plot
+  std::string plot_dir;
+  CLI::App* plot_cmd = cli.add_subcommand("plot", "redraw the plots of a run from DIR/log.csv");
+  plot_cmd->add_option("dir", plot_dir, "a run's output folder")->required();
+
+  // hold (the foundation's job: gravity-compensated joint PD)
   app::HoldOptions hold;
   double max_drift_mm = 1.0;
   CLI::App* hold_cmd = cli.add_subcommand("hold", "hold the ready posture with a gravity-compensated joint PD");
@@ -30,6 +143,19 @@ int main(int argc, char** argv) {
   }
 
   try {
+    if (run_cmd->parsed()) return runCommand(run_file, run_out, run_video, run_view, run_quiet, log_every);
+    if (batch_cmd->parsed()) {
+      batch.progress = !batch_quiet;
+      return batchCommand(batch, batch_quiet);
+    }
+    if (check_cmd->parsed()) return checkCommand(check_files);
+    if (plot_cmd->parsed()) {
+      if (!std::filesystem::exists(plot_dir + "/log.csv")) {
+        std::cerr << "handover: error: " << plot_dir << "/log.csv: no such file (run `handover run` first)\n";
+        return 2;
+      }
+      return app::drawPlots(plot_dir, false) == 0 ? 0 : 2;
+    }
     if (hold_cmd->parsed()) {
       const app::HoldSummary s = app::holdPosture(hold);
       app::printHoldSummary(std::cout, s);

@@ -1,5 +1,7 @@
 #include "perception/perception_estimator.hpp"
 
+#include <cmath>
+
 namespace handover::perception {
 
 PerceptionEstimator::PerceptionEstimator(const EstimatorSettings& settings) : settings_(settings) {}
@@ -15,7 +17,19 @@ bool PerceptionEstimator::addSample(const PoseSample& s) {
     ++rejected_;
     return false;
   }
-  latest_ = s;
+  if (have_ && settings_.smoothing_time > 0.0) {
+    const double a = 1.0 - std::exp(-(s.stamp - latest_.stamp) / settings_.smoothing_time);
+    const auto blend = [a](Pose& into, const Pose& sample) {
+      into.position += a * (sample.position - into.position);
+      into.orientation = into.orientation.slerp(a, sample.orientation).normalized();
+    };
+    blend(latest_.hand, s.hand);
+    blend(latest_.forearm, s.forearm);
+    blend(latest_.upper_arm, s.upper_arm);
+    latest_.stamp = s.stamp;
+  } else {
+    latest_ = s;
+  }
   have_ = true;
   return true;
 }

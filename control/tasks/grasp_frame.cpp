@@ -1,5 +1,7 @@
 #include "control/tasks/grasp_frame.hpp"
 
+#include <cmath>
+
 #include "control/so3.hpp"
 
 namespace handover::control {
@@ -8,6 +10,25 @@ Matrix3 graspRotation(const ObservedState& obs, const GraspOffset& offset, const
   const Matrix3& R_obs = obs.pose.linear();
   const Matrix3& R_go = offset.placement.linear();
   if (!offset.has_free_axis) return R_obs * R_go;
+  if (offset.approach_from_base) {
+    // phi maximises  d . z(phi) + kappa tr(R_ee' Rot(a, phi) R0):  the approach
+    // axis z(phi) facing away from the base (d: base-to-object direction
+    // across the axis, unit) plus a little of "nearest to the gripper", which
+    // alone decides when the approach runs along the axis (z0 || a). Both
+    // terms are A cos(phi) + B sin(phi) + const, so phi is closed form.
+    constexpr double kappa = 0.25;
+    const Vector3 a = (R_obs * offset.free_axis).normalized();
+    const Matrix3 R0 = R_obs * R_go;
+    const Vector3 z0 = R0.col(2);
+    const Vector3 d = obs.pose.translation() - offset.base;
+    Vector3 d_perp = d - a.dot(d) * a;
+    d_perp = d_perp.norm() > 1e-9 ? Vector3(d_perp.normalized()) : Vector3::Zero();
+    const Matrix3 M = R0 * R_ee.transpose();
+    const double A = d_perp.dot(z0 - a.dot(z0) * a) + kappa * (M.trace() - a.dot(M * a));
+    const double B = d_perp.dot(a.cross(z0)) + kappa * (skew(a) * M).trace();
+    const double phi = std::atan2(B, A);
+    return Eigen::AngleAxisd(phi, a).toRotationMatrix() * R0;
+  }
   // the axis as seen by the gripper (u, grasp frame) and by the object (a, world)
   const Vector3 u = R_go.transpose() * offset.free_axis;
   const Vector3 a = R_obs * offset.free_axis;
@@ -24,7 +45,11 @@ GraspFrameState graspFrameState(const ObservedState& obs, const Vector6& alphado
   const Vector3 r = R_g * offset.placement.linear().transpose() * offset.placement.translation();
   const Vector3 w = obs.velocity.tail<3>();
   const Vector3 wdot = alphadot_obs.tail<3>();
-  s.pose.linear() = R_g;
+  // the half-turned twin of a parallel-jaw grasp, if nearer to the gripper
+  // (trace(R_ee' R) grows as the rotation between them shrinks)
+  const Matrix3 R_twin = R_g * Eigen::AngleAxisd(M_PI, Vector3::UnitZ()).toRotationMatrix();
+  const bool twin = offset.parallel_gripper && (R_ee.transpose() * R_twin).trace() > (R_ee.transpose() * R_g).trace();
+  s.pose.linear() = twin ? R_twin : R_g;
   s.pose.translation() = obs.pose.translation() + r;
   s.velocity.head<3>() = obs.velocity.head<3>() + w.cross(r);
   s.velocity.tail<3>() = w;

@@ -18,6 +18,19 @@ struct GraspOffset {
   /// origin) is as good, and the one nearest to the gripper is used.
   bool has_free_axis = false;
   Vector3 free_axis = Vector3::UnitZ();
+  /// With a free axis: instead of the rotation nearest to the gripper's
+  /// orientation, pick the one whose approach axis (grasp z) points most along
+  /// the horizontal-to-the-axis direction from `base` (world, m; the robot's
+  /// base) to the object, so the gripper comes from the robot's side; the
+  /// tracking task then controls all three orientation rows toward it.
+  bool approach_from_base = false;
+  Vector3 base = Vector3::Zero();
+  /// A parallel-jaw gripper grasps the same way after a half turn about its
+  /// approach axis (grasp z): of the grasp orientation and its half-turned
+  /// twin, track the one nearer to the gripper. Only for an empty gripper (a
+  /// held object would turn with it). Points keep their place: the lever
+  /// arm is computed from the unturned frame.
+  bool parallel_gripper = false;
 };
 
 struct GraspFrameState {
@@ -28,9 +41,10 @@ struct GraspFrameState {
 };
 
 /// Rotation of the grasp frame in the world. Without a free axis: R_obs R_grasp^obs.
-/// With one: the member of {R_obs Rot(free_axis, phi) R_grasp^obs} closest to
-/// R_ee (the smallest rotation that carries R_ee's copy of the axis onto the
-/// object's axis, applied to R_ee).
+/// With one: a member of {R_obs Rot(free_axis, phi) R_grasp^obs}: with
+/// approach_from_base the one facing away from the base (closed form), else
+/// the one closest to R_ee (the smallest rotation that carries R_ee's copy of
+/// the axis onto the object's axis, applied to R_ee).
 Matrix3 graspRotation(const ObservedState& obs, const GraspOffset& offset, const Matrix3& R_ee);
 
 /// Full state of the grasp frame given the observed object's state and its

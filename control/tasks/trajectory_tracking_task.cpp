@@ -44,7 +44,8 @@ void TrajectoryTrackingTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen
 
   // orientation rows
   angle_error_ = logRotation(R_ee * g.pose.linear().transpose()).norm();
-  if (!offset_.has_free_axis) {
+  // full orientation rows unless the rotation about a free axis is left free
+  if (!offset_.has_free_axis || offset_.approach_from_base) {
     error_.tail<3>() = orientationError(R_ee, g.pose.linear());
     A.block<3, kArmDofs>(3, VariableLayout::kQdd) = J_.bottomRows<3>();
     A.block<3, 3>(3, VariableLayout::kObs + 3) = -Matrix3::Identity();

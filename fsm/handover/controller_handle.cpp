@@ -42,6 +42,13 @@ void CommandLedger::apply(Channel c, const ScopedCommands& v) {
       current_.speed_scale = v.speed_scale;
       ctl.setSpeedScale(v.speed_scale);
       break;
+    case Channel::kGains:
+      current_.gains_active = v.gains_active;
+      current_.gains_translation = v.gains_translation;
+      current_.gains_orientation = v.gains_orientation;
+      if (v.gains_active) ctl.setTrackingStiffness(v.gains_translation, v.gains_orientation);
+      else ctl.clearTrackingStiffness();
+      break;
   }
 }
 
@@ -76,6 +83,11 @@ void copyChannel(Channel c, const ScopedCommands& from, ScopedCommands& to) {
       to.posture = from.posture;
       break;
     case Channel::kSpeedScale: to.speed_scale = from.speed_scale; break;
+    case Channel::kGains:
+      to.gains_active = from.gains_active;
+      to.gains_translation = from.gains_translation;
+      to.gains_orientation = from.gains_orientation;
+      break;
   }
 }
 }  // namespace
@@ -146,6 +158,20 @@ void ControllerHandle::undo() {
     if (touched_ & (1u << c)) ledger_->apply(static_cast<Channel>(c), saved_);
   }
   touched_ = 0;
+}
+
+void ControllerHandle::setTrackingStiffness(double translation, double orientation) {
+  ScopedCommands next = ledger_->current();
+  next.gains_active = true;
+  next.gains_translation = translation;
+  next.gains_orientation = orientation;
+  change(Channel::kGains, next);
+}
+
+void ControllerHandle::clearTrackingStiffness() {
+  ScopedCommands next = ledger_->current();
+  next.gains_active = false;
+  change(Channel::kGains, next);
 }
 
 }  // namespace handover::fsm

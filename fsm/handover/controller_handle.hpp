@@ -6,7 +6,7 @@
 // Nested states therefore restore their parent's settings.
 //
 // Scoped channels: observation target, tracking on/off, tracking offset, pose
-// target, posture target, speed scale. Persistent commands (gripper, payload)
+// target, posture target, speed scale, tracking gains. Persistent commands (gripper, payload)
 // pass straight through and are never undone: a state's end must not open
 // the hand on a held object.
 // Real-time: every method is RT safe (fixed-size storage).
@@ -28,9 +28,12 @@ struct ScopedCommands {
   bool posture_active = false;
   Vector7 posture = Vector7::Zero();
   double speed_scale = 1.0;
+  bool gains_active = false;
+  double gains_translation = 0.0;  ///< 1/s^2
+  double gains_orientation = 0.0;  ///< 1/s^2
 };
 
-enum class Channel : std::uint8_t { kObservation, kTracking, kTrackingOffset, kPose, kPosture, kSpeedScale };
+enum class Channel : std::uint8_t { kObservation, kTracking, kTrackingOffset, kPose, kPosture, kSpeedScale, kGains };
 
 /// The controller as seen by all states, with the current scoped values.
 class CommandLedger {
@@ -67,6 +70,8 @@ class ControllerHandle {
   void setPostureTarget(const Vector7& q);
   void clearPostureTarget();
   void setSpeedScale(double scale);
+  void setTrackingStiffness(double translation, double orientation);
+  void clearTrackingStiffness();
 
   void setGripper(double width, double force) { ledger_->setGripper(width, force); }
   void setPayload(double mass, const Vector3& com) { ledger_->setPayload(mass, com); }

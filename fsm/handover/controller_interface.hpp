@@ -45,6 +45,14 @@ class ControllerInterface {
   virtual void clearPostureTarget() = 0;
   /// Scales every task's speed (0 = hold still, 1 = nominal).
   virtual void setSpeedScale(double scale) = 0;
+  /// Stiffness of the tracking task (1/s^2, translation and orientation,
+  /// critically damped) for the current phase; clear returns to the
+  /// configured gains. Optional: a controller without phase gains ignores it.
+  virtual void setTrackingStiffness(double translation, double orientation) {
+    (void)translation;
+    (void)orientation;
+  }
+  virtual void clearTrackingStiffness() {}
 
   // --- physical commands (persistent: they outlive the state) -------------
   /// Total finger opening target (m, 0..0.08) and grasp force limit (N).

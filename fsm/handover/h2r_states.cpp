@@ -48,10 +48,14 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
 Approach::Approach(bool hand)
     : hand_(hand), near_(declareOutput("Near")), withdrawn_(declareOutput("Withdrawn")) {}
 
-void Approach::configure(const YamlReader& def) { near_distance_ = readPositive(def, "near_distance", 1.0); }
+void Approach::configure(const YamlReader& def) {
+  near_distance_ = readPositive(def, "near_distance", 1.0);
+  if (def.has("near_orientation_deg")) near_orientation_ = readPositive(def, "near_orientation_deg", 180.0) * M_PI / 180.0;
+  if (def.has("standoff")) standoff_ = readRange(def, "standoff", 0.0, 0.3);
+}
 
 void Approach::onStart(HandoverContext& ctx) {
-  trackTarget(ctx, ctrl(), hand_);
+  trackTarget(ctx, ctrl(), hand_, standoff_);
   if (!hand_) ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
 }
 
@@ -60,7 +64,8 @@ bool Approach::onRun(HandoverContext& ctx) {
     setOutput(withdrawn_);
     return true;
   }
-  if (positionError(ctx.in.tcp_pose, ctx.in.target_pose) <= near_distance_) {
+  if (positionError(ctx.in.tcp_pose, ctx.in.target_pose) <= near_distance_ &&
+      rotationError(ctx.in.tcp_pose, ctx.in.target_pose) <= near_orientation_) {
     setOutput(near_);
     return true;
   }

@@ -1,6 +1,8 @@
 // Human to robot: the person offers the object, the robot takes it.
 #pragma once
 
+#include <cmath>
+
 #include "fsm/handover/handover_state.hpp"
 
 namespace handover::fsm {
@@ -39,6 +41,8 @@ class Approach : public HandoverState {
   bool hand_;
   int near_, withdrawn_;
   double near_distance_ = 0.1;
+  double near_orientation_ = M_PI;  ///< rad
+  double standoff_ = 0.0;           ///< m, pre-grasp distance along the approach axis
 };
 
 /// [Grasped, Missed, Withdrawn] Keeps tracking the grasp frame; closes when

@@ -40,6 +40,12 @@ struct HandoverInput {
   /// Smallest distance between the robot links and the person's arm and
   /// hand, m (fingers excluded while they share the object). Large if unknown.
   double human_distance = 1e9;
+  /// The same split by body: robot to the person's forearm and upper arm
+  /// (never a grasp-zone exception), and robot to the hand (closeness is the
+  /// point inside the grasp zone). Large if unknown: then human_distance
+  /// alone decides, with the grasp-zone exception.
+  double arm_distance = 1e9;
+  double hand_distance = 1e9;
 
   // controller feedback
   ObservationTarget observed_target = ObservationTarget::kNone;  ///< what the observation follows now

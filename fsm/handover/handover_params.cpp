@@ -51,6 +51,11 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
     const YamlReader r = n.child("max_retries");
     p.max_retries = static_cast<int>(r.checkRange(r.asInt(), 0, 100));
   }
+  if (auto t = n.optionalChild("tracking")) {
+    p.tracking_translation_stiffness = inRange(*t, "translation_stiffness", 0.0, 1000.0);
+    p.tracking_orientation_stiffness = inRange(*t, "orientation_stiffness", 0.0, 1000.0);
+    t->finish();
+  }
   const YamlReader g = n.child("gripper");
   p.gripper_open_width = inRange(g, "open_width", 0.0, 0.08);
   p.gripper_close_width = inRange(g, "close_width", 0.0, 0.08);

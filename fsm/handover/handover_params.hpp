@@ -21,6 +21,11 @@ struct HandoverParams {
   Workspace workspace;
   double reach_radius = 0.75;        ///< m from workspace.center: a settled object/hand closer is "within reach"
   int max_retries = 2;               ///< retries after an abort before giving up
+  /// Tracking-task stiffness (1/s^2, critically damped) while the robot
+  /// follows the person (approach, grasp, present); 0 = the controller's
+  /// configured gains (the paper's K = 1 / 2 in config/controller.yaml).
+  double tracking_translation_stiffness = 0.0;
+  double tracking_orientation_stiffness = 0.0;
   // gripper
   double gripper_open_width = 0.08;  ///< m, commanded opening
   double gripper_close_width = 0.0;  ///< m, commanded when grasping (the object stops the fingers)

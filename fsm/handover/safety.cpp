@@ -11,12 +11,17 @@ void HumanTooClose::configure(const YamlReader& def) {
   grasp_zone_ = g.checkRange(g.asDouble(), 0.0, 1.0);
 }
 
+bool personTooClose(const HandoverContext& h, double distance, double grasp_zone) {
+  if (!(h.in.human_distance < distance)) return false;
+  if (h.in.arm_distance < distance) return true;
+  const bool near_tcp = positionError(h.in.hand.pose, h.in.tcp_pose) <= grasp_zone;
+  const bool near_target = h.in.observed_target != ObservationTarget::kNone &&
+                           positionError(h.in.hand.pose, h.in.target_pose) <= grasp_zone;
+  return !(h.in.hand.valid && (near_tcp || near_target));
+}
+
 bool HumanTooClose::evaluate(Context& ctx) {
-  const HandoverContext& h = static_cast<HandoverContext&>(ctx);
-  if (!(h.in.human_distance < distance_)) return false;
-  const bool in_grasp_zone =
-      h.in.hand.valid && positionError(h.in.hand.pose, h.in.tcp_pose) <= grasp_zone_;
-  return !in_grasp_zone;
+  return personTooClose(static_cast<HandoverContext&>(ctx), distance_, grasp_zone_);
 }
 
 SafetyStop::SafetyStop() : clear_(declareOutput("Clear")) {}
@@ -24,6 +29,7 @@ SafetyStop::SafetyStop() : clear_(declareOutput("Clear")) {}
 void SafetyStop::configure(const YamlReader& def) {
   clear_distance_ = readPositive(def, "clear_distance", 2.0);
   clear_time_ = readRange(def, "clear_time", 0.0, 10.0);
+  if (def.has("grasp_zone_radius")) grasp_zone_ = readRange(def, "grasp_zone_radius", 0.0, 1.0);
 }
 
 void SafetyStop::onStart(HandoverContext& ctx) {
@@ -34,7 +40,7 @@ void SafetyStop::onStart(HandoverContext& ctx) {
 }
 
 bool SafetyStop::onRun(HandoverContext& ctx) {
-  if (!(ctx.in.human_distance > clear_distance_)) {
+  if (personTooClose(ctx, clear_distance_, grasp_zone_)) {
     since_ = -1.0;
     return false;
   }

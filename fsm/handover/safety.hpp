@@ -6,9 +6,14 @@
 
 namespace handover::fsm {
 
-/// Holds while the person is closer to the robot than `distance` (m,
-/// HandoverInput::human_distance) and the hand is not in the grasp zone
-/// (within grasp_zone_radius of the TCP), where closeness is the point.
+/// True when the person is closer to the robot than `distance` (m) where it
+/// matters: the forearm or upper arm anywhere, or the hand outside the grasp
+/// zone. The grasp zone is within `grasp_zone` (m) of the TCP or, while the
+/// observation follows a target, of the tracking target frame: there the
+/// hand is close on purpose (collision constraints still keep it untouched).
+bool personTooClose(const HandoverContext& h, double distance, double grasp_zone);
+
+/// Holds while personTooClose(distance, grasp_zone_radius).
 class HumanTooClose : public Condition {
  public:
   void configure(const YamlReader& def) override;
@@ -19,8 +24,10 @@ class HumanTooClose : public Condition {
 };
 
 /// [Clear] Preempting stop: tracking off, TCP held where it is, until the
-/// person is farther than clear_distance for clear_time. Counts the stop.
-/// The gripper is not touched. Keys: clear_distance (m), clear_time (s).
+/// person is no longer too close (personTooClose with clear_distance and
+/// grasp_zone_radius) for clear_time. Counts the stop. The gripper is not
+/// touched. Keys: clear_distance (m), clear_time (s), grasp_zone_radius (m,
+/// optional, 0.15).
 class SafetyStop : public HandoverState {
  public:
   SafetyStop();
@@ -30,7 +37,7 @@ class SafetyStop : public HandoverState {
 
  private:
   int clear_;
-  double clear_distance_ = 0.2, clear_time_ = 0.5;
+  double clear_distance_ = 0.2, clear_time_ = 0.5, grasp_zone_ = 0.15;
   double since_ = -1.0;
 };
 

@@ -11,10 +11,19 @@ inline Isometry presentationOffset(const HandoverContext& ctx) {
   return ctx.params->object_in_hand * ctx.object.grasp_in_object;
 }
 
-inline void trackTarget(HandoverContext& ctx, ControllerHandle& ctrl, bool hand) {
+/// `standoff` (m) backs the tracked frame off along its own z axis (the
+/// gripper's approach axis): the gripper first lines up at a pre-grasp pose
+/// and then slides in along its fingers, instead of sweeping its fingertips
+/// over the object or the hand while it still turns.
+inline void trackTarget(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double standoff = 0.0) {
   ctrl.setObservationTarget(hand ? ObservationTarget::kHand : ObservationTarget::kObject);
-  ctrl.setTrackingOffset(hand ? presentationOffset(ctx) : ctx.object.grasp_in_object);
+  const Isometry target = hand ? presentationOffset(ctx) : ctx.object.grasp_in_object;
+  ctrl.setTrackingOffset(target * Eigen::Translation3d(0.0, 0.0, -standoff));
   ctrl.clearPoseTarget();
+  const HandoverParams& p = *ctx.params;
+  if (p.tracking_translation_stiffness > 0.0 && p.tracking_orientation_stiffness > 0.0) {
+    ctrl.setTrackingStiffness(p.tracking_translation_stiffness, p.tracking_orientation_stiffness);
+  }
   ctrl.enableTracking(true);
 }
 

@@ -1,0 +1,143 @@
+#include "app/batch/batch_runner.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <thread>
+
+#include "app/batch/scenario_variation.hpp"
+#include "app/run/run_scenario.hpp"
+#include "config/input_error.hpp"
+#include "scenes/scenario/scenario_parser.hpp"
+
+namespace handover::app {
+
+namespace {
+
+struct Job {
+  scenario::Scenario scenario;
+  BatchEntry entry;
+};
+
+std::string duration(double s) {
+  char b[32];
+  if (s < 60) std::snprintf(b, sizeof b, "%ds", static_cast<int>(s + 0.5));
+  else std::snprintf(b, sizeof b, "%dm%02ds", static_cast<int>(s) / 60, static_cast<int>(s) % 60);
+  return b;
+}
+
+std::string safeName(std::string s) {
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+  return s;
+}
+
+}  // namespace
+
+std::vector<BatchEntry> runBatch(const BatchOptions& opt, std::ostream& out) {
+  // parse everything first: bad input fails the batch before it starts
+  std::vector<Job> jobs;
+  for (const auto& file : opt.files) {
+    const scenario::Scenario base = scenario::parseScenario(file);
+    if (opt.vary <= 0) {
+      Job j{base, {}};
+      j.entry.scenario_file = file;
+      j.entry.seed = static_cast<unsigned long>(base.seed);
+      jobs.push_back(std::move(j));
+    }
+    for (int k = 1; k <= opt.vary; ++k) {
+      Job j{makeVariant(base, k), {}};
+      j.entry.scenario_file = file;
+      j.entry.variant = k;
+      j.entry.seed = static_cast<unsigned long>(j.scenario.seed);
+      jobs.push_back(std::move(j));
+    }
+  }
+
+  std::filesystem::create_directories(opt.out_dir);
+  std::atomic<std::size_t> next{0};
+  std::atomic<int> finished{0}, succeeded{0};
+  std::mutex print_mutex;
+  const auto t0 = std::chrono::steady_clock::now();
+  const bool tty = isatty(STDERR_FILENO) != 0;
+  int last_decile = -1;
+
+  auto report = [&]() {
+    if (!opt.progress) return;
+    const int done = finished.load();
+    const int n = static_cast<int>(jobs.size());
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double eta = done > 0 ? elapsed / done * (n - done) : 0.0;
+    const int width = 30;
+    const int fill = n ? done * width / n : width;
+    std::string bar(static_cast<std::size_t>(fill), '#');
+    bar.resize(width, '.');
+    char line[200];
+    std::snprintf(line, sizeof line, "[%s] %d/%d runs, %d ok, elapsed %s, ETA %s", bar.c_str(), done, n,
+                  succeeded.load(), duration(elapsed).c_str(), done ? duration(eta).c_str() : "?");
+    if (tty) {
+      out << "\r" << line << (done == n ? "\n" : "") << std::flush;
+    } else {
+      // not a terminal (CI, a file): a line each tenth
+      const int decile = n ? done * 10 / n : 10;
+      if (decile != last_decile) {
+        out << line << "\n" << std::flush;
+        last_decile = decile;
+      }
+    }
+  };
+
+  auto worker = [&]() {
+    for (;;) {
+      const std::size_t i = next.fetch_add(1);
+      if (i >= jobs.size()) return;
+      Job& job = jobs[i];
+      RunOptions ro;
+      ro.plots = false;
+      ro.log_every_ms = opt.per_run_files ? 5 : 0;
+      if (opt.per_run_files) {
+        ro.out_dir = opt.out_dir + "/runs/" + safeName(job.scenario.name);
+      }
+      try {
+        job.entry.summary = runScenario(job.scenario, ro);
+      } catch (const std::exception& e) {
+        job.entry.summary.scenario = job.scenario.name;
+        job.entry.summary.mode = scenario::toString(job.scenario.mode);
+        job.entry.summary.outcome = "error";
+        job.entry.summary.error_message = e.what();
+      }
+      if (job.entry.summary.success()) ++succeeded;
+      ++finished;
+      std::lock_guard<std::mutex> lock(print_mutex);
+      report();
+    }
+  };
+
+  {
+    std::lock_guard<std::mutex> lock(print_mutex);
+    report();
+  }
+  const int n_threads = std::max(1, std::min<int>(opt.jobs, static_cast<int>(jobs.size())));
+  std::vector<std::thread> pool;
+  for (int t = 0; t < n_threads; ++t) pool.emplace_back(worker);
+  for (auto& t : pool) t.join();
+
+  std::vector<BatchEntry> entries;
+  entries.reserve(jobs.size());
+  for (auto& j : jobs) entries.push_back(std::move(j.entry));
+
+  const std::string csv_path = opt.out_dir + "/results.csv";
+  std::ofstream csv(csv_path);
+  if (!csv) throw std::runtime_error(csv_path + ": cannot write");
+  csv << resultsCsvHeader() << "\n";
+  for (const auto& e : entries) csv << resultsCsvRow(e) << "\n";
+  std::ofstream(opt.out_dir + "/summary.json") << batchSummaryJson(entries);
+  return entries;
+}
+
+}  // namespace handover::app

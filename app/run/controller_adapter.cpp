@@ -1,0 +1,88 @@
+#include "app/run/controller_adapter.hpp"
+
+#include <algorithm>
+
+namespace handover::app {
+
+ControllerAdapter::ControllerAdapter(control::Controller& controller, perception::ObservationTarget& target,
+                                     const control::GraspOffset& object_grasp, double open_width)
+    : controller_(controller), target_(target), object_grasp_(object_grasp), offset_(object_grasp),
+      gripper_width_(open_width) {}
+
+void ControllerAdapter::setObservationTarget(fsm::ObservationTarget target) {
+  target_kind_ = target;
+  // the perception side blends between sources, so the observed state never jumps
+  if (target == fsm::ObservationTarget::kObject) target_.select(perception::TargetSource::Object, now_);
+  if (target == fsm::ObservationTarget::kHand) target_.select(perception::TargetSource::Hand, now_);
+  applyOffset();
+}
+
+void ControllerAdapter::enableTracking(bool on) {
+  tracking_on_ = on;
+  controller_.setTaskEnabled("tracking", on);
+}
+
+void ControllerAdapter::setTrackingOffset(const fsm::Isometry& target_in_observed) {
+  offset_.placement = target_in_observed;
+  applyOffset();
+}
+
+void ControllerAdapter::applyOffset() {
+  // an offset in the object's frame (grasp or pre-grasp) keeps the object's
+  // symmetry; one in the hand's frame does not
+  offset_.has_free_axis = target_kind_ == fsm::ObservationTarget::kObject && object_grasp_.has_free_axis;
+  offset_.free_axis = object_grasp_.free_axis;
+  // a symmetric object is taken from the robot's side (the base is the world origin)
+  offset_.approach_from_base = true;
+  offset_.base = control::Vector3::Zero();
+  // an empty gripper may take the object with either finger on either side
+  offset_.parallel_gripper = target_kind_ == fsm::ObservationTarget::kObject;
+  controller_.setGraspOffset(offset_);
+}
+
+void ControllerAdapter::setPoseTarget(const fsm::Isometry& tcp_in_world) {
+  controller_.setPoseTarget(tcp_in_world);
+  controller_.setTaskEnabled("pose", true);
+}
+
+void ControllerAdapter::clearPoseTarget() { controller_.setTaskEnabled("pose", false); }
+
+void ControllerAdapter::setPostureTarget(const fsm::Vector7& q) { controller_.setPostureTarget(q); }
+
+void ControllerAdapter::clearPostureTarget() { controller_.setPostureTarget(controller_.config().posture.target); }
+
+void ControllerAdapter::setSpeedScale(double scale) {
+  // the controller scales its velocity limits; zero would make the QP hold
+  // position abruptly, so keep a small floor (the FSM's stop uses a pose hold)
+  speed_scale_ = std::clamp(scale, 0.0, 1.0);
+  controller_.setSpeedScale(std::max(speed_scale_, 0.02));
+}
+
+void ControllerAdapter::setTrackingStiffness(double translation, double orientation) {
+  controller_.trackingTask().setGains(control::PdGains::critical(translation), control::PdGains::critical(orientation));
+}
+
+void ControllerAdapter::clearTrackingStiffness() {
+  const auto& t = controller_.config().tracking;
+  controller_.trackingTask().setGains(t.translation.gains, t.orientation.gains);
+}
+
+void ControllerAdapter::setGripper(double width, double force) {
+  gripper_width_ = std::clamp(width, 0.0, 0.08);
+  gripper_force_ = std::max(force, 0.0);
+}
+
+void ControllerAdapter::setPayload(double mass, const fsm::Vector3& com_in_tcp) {
+  control::Payload p;
+  p.mass = mass;
+  p.com = com_in_tcp;
+  controller_.setPayload(p);
+  payload_set_ = true;
+}
+
+void ControllerAdapter::clearPayload() {
+  controller_.clearPayload();
+  payload_set_ = false;
+}
+
+}  // namespace handover::app

@@ -1,0 +1,63 @@
+// The state machine's view of the QP controller (fsm::ControllerInterface),
+// implemented over control::Controller and perception::ObservationTarget.
+// Every call stores a set-point applied at the next control step; all calls
+// are real-time safe (no allocation, no exceptions).
+//
+// Frames: world; TCP offsets in the observed object's frame; SI units.
+#pragma once
+
+#include "control/controller.hpp"
+#include "fsm/handover/controller_interface.hpp"
+#include "perception/observation_target.hpp"
+
+namespace handover::app {
+
+class ControllerAdapter : public fsm::ControllerInterface {
+ public:
+  /// `grasp_free_axis`: the object's symmetry axis (object frame) if it has
+  /// one; the tracking offset then keeps that freedom (nearest grasp).
+  ControllerAdapter(control::Controller& controller, perception::ObservationTarget& target,
+                    const control::GraspOffset& object_grasp, double open_width);
+
+  /// Time of the current cycle (blends of the observation target start then).
+  void setTime(double t) { now_ = t; }
+
+  void setObservationTarget(fsm::ObservationTarget target) override;
+  void enableTracking(bool on) override;
+  void setTrackingOffset(const fsm::Isometry& target_in_observed) override;
+  void setPoseTarget(const fsm::Isometry& tcp_in_world) override;
+  void clearPoseTarget() override;
+  void setPostureTarget(const fsm::Vector7& q) override;
+  void clearPostureTarget() override;
+  void setSpeedScale(double scale) override;
+  void setTrackingStiffness(double translation, double orientation) override;
+  void clearTrackingStiffness() override;
+  void setGripper(double width, double force) override;
+  void setPayload(double mass, const fsm::Vector3& com_in_tcp) override;
+  void clearPayload() override;
+
+  fsm::ObservationTarget observationTarget() const { return target_kind_; }
+  bool payloadSet() const { return payload_set_; }
+  double gripperWidth() const { return gripper_width_; }
+  double gripperForce() const { return gripper_force_; }
+  bool trackingEnabled() const { return tracking_on_; }
+  double speedScale() const { return speed_scale_; }
+  /// The tracking target in the observed frame, as last set.
+  const fsm::Isometry& trackingOffset() const { return offset_.placement; }
+
+ private:
+  void applyOffset();
+  control::Controller& controller_;
+  perception::ObservationTarget& target_;
+  control::GraspOffset object_grasp_;
+  control::GraspOffset offset_;
+  fsm::ObservationTarget target_kind_ = fsm::ObservationTarget::kNone;
+  double now_ = 0.0;
+  bool tracking_on_ = false;
+  bool payload_set_ = false;
+  double gripper_width_;
+  double gripper_force_ = 40.0;
+  double speed_scale_ = 1.0;
+};
+
+}  // namespace handover::app

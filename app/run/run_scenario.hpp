@@ -1,0 +1,38 @@
+// One scenario, end to end in the simulator: the app's loop reads the arm's
+// sensors, moves the scripted person, samples the pose sensor, updates
+// perception, steps the state machine, solves the QP and applies torques, in
+// that order, through plain structs (design notes 5).
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "app/report/run_summary.hpp"
+#include "scenes/scenario/scenario.hpp"
+
+namespace handover::app {
+
+struct RunOptions {
+  std::string out_dir;      ///< where summary.json, log.csv and plots go; "" = write nothing
+  std::string video_path;   ///< MP4 to record (headless); "" = none
+  bool view = false;        ///< open the interactive viewer (needs a display)
+  bool plots = true;        ///< draw the PNGs after the run (needs out_dir)
+  int log_every_ms = 5;     ///< log.csv row period
+  double linger = 0.5;      ///< s simulated after the state machine finished
+  /// Called about every 0.1 s of simulated time with (sim time, duration).
+  std::function<void(double, double)> progress;
+};
+
+/// Runs the scenario. Bad input found late (a URDF, a config) throws
+/// handover::InputError; faults during the run end it with outcome "error"
+/// and the message in the summary.
+RunSummary runScenario(const scenario::Scenario& scenario, const RunOptions& options);
+
+/// The `expect:` lines of the scenario that the summary does not meet, as
+/// readable sentences ("outcome: expected success, got timeout").
+std::vector<std::string> checkExpectations(const scenario::Scenario& scenario, const RunSummary& summary);
+
+/// A one-screen human-readable summary.
+std::string formatSummary(const RunSummary& summary);
+
+}  // namespace handover::app

@@ -1,0 +1,24 @@
+// Estimator settings from config/perception.yaml, strictly validated.
+// Start-up only (allocates, throws).
+#pragma once
+
+#include <string>
+
+#include "config/yaml_reader.hpp"
+
+namespace handover::perception {
+
+struct PerceptionConfig {
+  double max_age = 0.1;          ///< s, older samples are stale
+  double smoothing_time = 0.03;  ///< s, estimator smoothing time constant (0 = none)
+  double blend_time = 0.5;       ///< s, observation-target switch blend
+};
+
+/// Reads a perception config; unknown keys, wrong types and out-of-range
+/// values throw InputError naming the file, key and line.
+PerceptionConfig loadPerceptionConfig(const std::string& path);
+PerceptionConfig parsePerceptionConfig(const YamlReader& root);
+/// HANDOVER_SOURCE_DIR/config/perception.yaml
+std::string defaultPerceptionConfigPath();
+
+}  // namespace handover::perception
