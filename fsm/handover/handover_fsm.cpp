@@ -92,8 +92,9 @@ void HandoverFsm::sanitise(const HandoverInput& in) {
     ctx_.in.object.valid = false;
     bad = true;
   }
-  if (std::isnan(in.human_distance)) {
-    ctx_.in.human_distance = 0.0;  // unknown distance: assume the worst
+  if (std::isnan(in.human_distance) || std::isnan(in.arm_distance) || std::isnan(in.hand_distance)) {
+    // unknown distance: assume the worst, and that it is the arm (no grasp-zone exception)
+    ctx_.in.human_distance = ctx_.in.arm_distance = ctx_.in.hand_distance = 0.0;
     bad = true;
   }
   if (!finite(in.target_pose) || !in.target_velocity.allFinite()) {

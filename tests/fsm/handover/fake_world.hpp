@@ -5,6 +5,7 @@
 // robot alone carries it, and the person's hand is scripted by the test.
 #pragma once
 
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <string>
@@ -103,7 +104,8 @@ struct World {
   Vector3 object = Vector3::Zero();
   double mass = 0.3;
   Vector3 pull = Vector3::Zero();   // force of a pulling person, while both hold
-  double human_distance = 1.0;
+  double human_distance = 1.0;  // robot to the person's hand
+  double arm_distance = 1.0;    // robot to the person's forearm / upper arm
   bool dropout = false;     // perception sends nothing
   double last_sample = 0.0;
   bool hand_open = true;
@@ -191,7 +193,9 @@ struct World {
     in.object.valid = !dropout;
     in.object.age = age;
     in.hand_open = hand_open;
-    in.human_distance = human_distance;
+    in.hand_distance = human_distance;
+    in.arm_distance = arm_distance;
+    in.human_distance = std::min(human_distance, arm_distance);
     in.observed_target = c.observation;
     in.target_pose = desired(c);
     in.target_velocity.head<3>() =

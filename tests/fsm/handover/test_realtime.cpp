@@ -37,9 +37,9 @@ TEST(HandoverRealtime, TakeWithSafetyEventsDoesNotAllocate) {
   rig.world.moveHand(Vector3(0.55, 0.0, 0.30), 0.5);
   auto gripped_since = std::make_shared<double>(-1.0);
   rig.person = [gripped_since](World& w) {
-    if (w.time > 0.1 && w.time < 0.15) w.human_distance = 0.2;      // slow down
-    else if (w.time > 0.2 && w.time < 0.3) w.human_distance = 0.05;  // stop
-    else w.human_distance = 1.0;
+    if (w.time > 0.1 && w.time < 0.15) w.arm_distance = 0.15;      // slow down
+    else if (w.time > 0.2 && w.time < 0.3) w.arm_distance = 0.05;  // stop
+    else w.arm_distance = 1.0;
     if (!w.robot_grip) return;
     if (*gripped_since < 0) *gripped_since = w.time;
     if (w.time - *gripped_since >= 0.1) w.person_holds = false;

@@ -12,12 +12,12 @@ TEST(HandoverSafety, CloseArmSlowsDownWithoutChangingState) {
   Rig rig;
   rig.world.moveHand(kMeet, 0.5);
   ASSERT_TRUE(rig.runUntilState("/Approach", 5.0));
-  rig.world.human_distance = 0.2;  // forearm near the robot, hand still far from the TCP
+  rig.world.arm_distance = 0.15;  // forearm near the robot, hand still far from the TCP
   rig.step();
   EXPECT_DOUBLE_EQ(rig.ctl.speed, 0.3);
   EXPECT_EQ(rig.ctl.count("speed 0.30"), 1);
   EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Approach"));
-  rig.world.human_distance = 1.0;
+  rig.world.arm_distance = 1.0;
   rig.step();
   EXPECT_DOUBLE_EQ(rig.ctl.speed, 1.0);  // the overlay's teardown restored the scale
   EXPECT_EQ(rig.ctl.count("speed 1.00"), 1);
@@ -30,7 +30,7 @@ TEST(HandoverSafety, TooCloseStopsTearsDownAndResumes) {
   ASSERT_TRUE(rig.runUntilState("/Approach", 5.0));
   ASSERT_TRUE(rig.ctl.tracking);
   const double gripper = rig.ctl.gripper_width;
-  rig.world.human_distance = 0.05;
+  rig.world.arm_distance = 0.05;  // the forearm pushes in
   rig.step();
   EXPECT_EQ(rig.fsm->activePath(), "SafetyStop");
   // the approach's tracking and observation were removed, the TCP is held
@@ -42,7 +42,7 @@ TEST(HandoverSafety, TooCloseStopsTearsDownAndResumes) {
   rig.runFor(1.0);
   EXPECT_EQ(rig.fsm->activePath(), "SafetyStop");  // stays while the person is close
   EXPECT_LT(rig.world.tcp_vel.norm(), 0.05);
-  rig.world.human_distance = 1.0;
+  rig.world.arm_distance = 1.0;
   ASSERT_TRUE(rig.runUntilState("/Approach", 2.0));  // clear for 0.5 s, then the handover resumes
   const auto leaves = rig.leaves();
   // closer than the slow-down distance too, so the overlay started first
@@ -63,6 +63,22 @@ TEST(HandoverSafety, HandInGraspZoneIsNotAnIntrusion) {
   EXPECT_NE(rig.fsm->activePath(), "SafetyStop");
   EXPECT_EQ(rig.fsm->stats().safety_stops, 0);
   EXPECT_DOUBLE_EQ(rig.ctl.speed, 1.0);
+}
+
+TEST(HandoverSafety, HandAtTheTrackingTargetIsNotAnIntrusionButTheForearmIs) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("/Approach", 5.0));
+  // the hand is where the gripper is going (the grasp frame), the TCP still
+  // farther than the grasp-zone radius: closeness of the hand is the handover
+  rig.world.human_distance = 0.05;
+  rig.runFor(0.2);
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Approach"));
+  EXPECT_EQ(rig.fsm->stats().safety_stops, 0);
+  // the same closeness of the forearm stops the robot
+  rig.world.arm_distance = 0.05;
+  rig.step();
+  EXPECT_EQ(rig.fsm->activePath(), "SafetyStop");
 }
 
 TEST(HandoverSafety, NoInterruptOnceDone) {
