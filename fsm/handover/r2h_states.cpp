@@ -32,21 +32,36 @@ bool HoldReady::onRun(HandoverContext& ctx) {
   return true;
 }
 
-Present::Present() : presented_(declareOutput("Presented")), withdrawn_(declareOutput("Withdrawn")) {}
+Present::Present()
+    : presented_(declareOutput("Presented")), withdrawn_(declareOutput("Withdrawn")), pulled_(declareOutput("Pulled")) {}
 
 void Present::configure(const YamlReader& def) {
   pos_tol_ = readPositive(def, "position_tolerance", 0.2);
   rot_tol_ = readPositive(def, "orientation_tolerance_deg", 180.0) * M_PI / 180.0;
   speed_tol_ = readPositive(def, "speed_tolerance", 2.0);
   settle_time_ = readRange(def, "settle_time", 0.0, 5.0);
+  if (def.has("pull_threshold")) pull_threshold_ = readPositive(def, "pull_threshold", 100.0);
+  if (def.has("pull_hold_time")) pull_hold_ = readRange(def, "pull_hold_time", 0.0, 5.0);
 }
 
 void Present::onStart(HandoverContext& ctx) {
-  since_ = -1.0;
+  since_ = pull_since_ = -1.0;
+  ctx.force_holding = ctx.force;  // the object's and hand's weight, as carried in
   trackTarget(ctx, ctrl(), true);
 }
 
 bool Present::onRun(HandoverContext& ctx) {
+  // a person who takes hold and pulls before the robot settled: that is the
+  // handover, and the hand moving away is the pull, not a withdrawal
+  if (pull_threshold_ > 0.0 && (ctx.force - ctx.force_holding).norm() > pull_threshold_) {
+    if (pull_since_ < 0.0) pull_since_ = ctx.time;
+    if (ctx.time - pull_since_ >= pull_hold_) {
+      setOutput(pulled_);
+      return true;
+    }
+  } else {
+    pull_since_ = -1.0;
+  }
   if (withdrawn(ctx, ctx.in.hand)) {
     setOutput(withdrawn_);
     return true;

@@ -32,9 +32,10 @@ class Present : public HandoverState {
   bool onRun(HandoverContext& ctx) override;
 
  private:
-  int presented_, withdrawn_;
+  int presented_, withdrawn_, pulled_;
   double pos_tol_ = 0.02, rot_tol_ = 0.2, speed_tol_ = 0.05, settle_time_ = 0.2;
-  double since_ = -1.0;
+  double pull_threshold_ = 0.0, pull_hold_ = 0.05;  ///< N (0 = off), s
+  double since_ = -1.0, pull_since_ = -1.0;
 };
 
 /// [Pulled] Holds the TCP still and records the filtered force (object and
