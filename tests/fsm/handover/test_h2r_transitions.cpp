@@ -2,6 +2,7 @@
 // config/fsm.yaml, driven by the toy world and checked through the visited
 // states, the controller calls and the counters.
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include "tests/fsm/handover/fake_world.hpp"
 
@@ -74,7 +75,7 @@ TEST(HandoverH2R, WithdrawDuringApproachRetreatsAndRetries) {
   rig.world.moveHand(kAway, 0.8);  // the person changes their mind
   ASSERT_TRUE(rig.runUntilState("Retreat", 3.0));
   const int gripper_calls = rig.ctl.count("gripper 0.08") + rig.ctl.count("gripper 0.00");
-  ASSERT_TRUE(rig.runUntilState("WaitForOffer", 5.0));
+  ASSERT_TRUE(rig.runUntilState("WaitAgain", 5.0));
   // Retreat (gripper: keep) never touches the gripper
   EXPECT_EQ(rig.ctl.count("gripper 0.08") + rig.ctl.count("gripper 0.00"), gripper_calls);
   EXPECT_LT((rig.world.tcp.translation() - rig.fsm->params().safe_pose.translation()).norm(), 0.05);
@@ -84,7 +85,7 @@ TEST(HandoverH2R, WithdrawDuringApproachRetreatsAndRetries) {
   rig.world.moveHand(kMeet, 0.5);
   rig.person = releasesAfterGrip();
   ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 15.0)) << rig.fsm->activePath();
-  EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "WaitForOffer", "Approach", "Retreat", "WaitForOffer",
+  EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "WaitForOffer", "Approach", "Retreat", "WaitAgain",
                                   "Approach", "Grasp", "WaitForRelease", "Retract", "Done"}));
   EXPECT_STREQ(rig.fsm->stats().outcome, "success");
   EXPECT_EQ(rig.fsm->stats().handovers, 1);
@@ -129,12 +130,16 @@ TEST(HandoverH2R, PersonWhoNeverComesBackEndsAborted) {
   rig.world.moveHand(kMeet, 0.5);
   ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
   rig.world.moveHand(kAway, 0.8);
-  ASSERT_TRUE(rig.runUntilState("WaitForOffer", 8.0));
+  ASSERT_TRUE(rig.runUntilState("WaitAgain", 8.0));
   const double waiting_since = rig.world.time;
   ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 30.0));
-  EXPECT_NEAR(rig.world.time - waiting_since, 20.0, 0.1);  // WaitForOffer timeout in config/fsm.yaml
+  // the waiting time is WaitAgain's timeout in the shipped config
+  const double timeout = YAML::LoadFile(HandoverFsm::defaultConfigPath())["machine"]["states"]["Handover"]["states"]
+                                        ["HumanToRobot"]["states"]["WaitAgain"]["timeout"]
+                                            .as<double>();
+  EXPECT_NEAR(rig.world.time - waiting_since, timeout, 0.1);
   EXPECT_EQ(rig.leaves(),
-            (Leaves{"SelectDirection", "WaitForOffer", "Approach", "Retreat", "WaitForOffer", "Aborted"}));
+            (Leaves{"SelectDirection", "WaitForOffer", "Approach", "Retreat", "WaitAgain", "Aborted"}));
   EXPECT_STREQ(rig.fsm->stats().outcome, "aborted");
   EXPECT_EQ(rig.fsm->stats().aborts, 1);
   EXPECT_EQ(rig.fsm->stats().retries, 1);
@@ -150,11 +155,11 @@ TEST(HandoverH2R, NoReleaseOpensAndRetreatsWithoutPayload) {
   EXPECT_GT(rig.findCall("gripper 0.08", rig.findCall("gripper 0.00")), 0);  // opened after closing
   EXPECT_EQ(rig.ctl.count("payload 0.30"), 0);
   EXPECT_EQ(rig.ctl.gripper_width, rig.fsm->params().gripper_open_width);
-  ASSERT_TRUE(rig.runUntilState("WaitForOffer", 5.0));
+  ASSERT_TRUE(rig.runUntilState("WaitAgain", 5.0));
   EXPECT_TRUE(rig.world.person_holds);  // the person still has their object
   EXPECT_FALSE(rig.world.robot_grip);
   EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "WaitForOffer", "Approach", "Grasp", "WaitForRelease",
-                                  "RetreatOpen", "WaitForOffer"}));
+                                  "RetreatOpen", "WaitAgain"}));
   EXPECT_EQ(rig.fsm->stats().aborts, 1);
   EXPECT_EQ(rig.fsm->stats().retries, 1);
 }

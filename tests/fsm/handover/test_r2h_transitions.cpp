@@ -83,12 +83,12 @@ TEST(HandoverR2H, NoPullKeepsHoldingRetreatsAndRetries) {
   const double since = rig.world.time;
   ASSERT_TRUE(rig.runUntilState("Retreat", 7.0));
   EXPECT_NEAR(rig.world.time - since, 6.0, 0.01);  // DetectPull timeout
-  ASSERT_TRUE(rig.runUntilState("HoldReady", 5.0));
+  ASSERT_TRUE(rig.runUntilState("WaitAgain", 5.0));
   EXPECT_EQ(rig.ctl.count("gripper 0.08"), 0);  // never opened
   EXPECT_EQ(rig.ctl.count("clear payload"), 0);
   EXPECT_TRUE(rig.world.robot_grip);
   EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "HoldReady", "WaitForReceiver", "Approach", "Present",
-                                  "DetectPull", "Retreat", "HoldReady"}));
+                                  "DetectPull", "Retreat", "WaitAgain"}));
   EXPECT_EQ(rig.fsm->stats().aborts, 1);
   EXPECT_EQ(rig.fsm->stats().retries, 1);
 }
@@ -100,11 +100,11 @@ TEST(HandoverR2H, WithdrawDuringApproachRetreatsHoldingTheObject) {
   ASSERT_TRUE(rig.runUntilState("/Approach", 5.0));
   rig.world.moveHand(kAway, 0.8);
   ASSERT_TRUE(rig.runUntilState("Retreat", 3.0));
-  ASSERT_TRUE(rig.runUntilState("HoldReady", 5.0));
+  ASSERT_TRUE(rig.runUntilState("WaitAgain", 5.0));
   EXPECT_TRUE(rig.world.robot_grip);
   EXPECT_EQ(rig.ctl.count("gripper 0.08"), 0);
   EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "HoldReady", "WaitForReceiver", "Approach", "Retreat",
-                                  "HoldReady"}));
+                                  "WaitAgain"}));
   EXPECT_EQ(rig.fsm->stats().aborts, 1);
   EXPECT_EQ(rig.fsm->stats().retries, 1);
 }
