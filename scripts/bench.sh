@@ -130,7 +130,10 @@ for i in "${!names[@]}"; do
       if awk -v w="$w" -v t="$t" 'BEGIN { exit !(w <= t) }'; then verdict="pass"; else verdict="FAIL"; misses=$((misses + 1)); fi
     fi
     printf '%-48s %9s us %9s us %10s  %s\n' "$bm" "$w" "$c" "${t:+<= $t us}" "$verdict" | tee -a "$summary"
-  done < <(awk '$1 ~ /_median$/ && NF >= 5 { n = $1; sub(/_median$/, "", n); print n, $2, $3, $4, $5 }' "$out")
+  done < <(awk '$1 ~ /^BM_/ && NF >= 5 && $2 ~ /^[0-9.]+$/ {
+                 if ($1 ~ /_median$/) { n = $1; sub(/_median$/, "", n); med[++m] = n " " $2 " " $3 " " $4 " " $5 }
+                 else if ($1 !~ /_(mean|stddev|cv)$/) single[++s] = $1 " " $2 " " $3 " " $4 " " $5 }
+               END { if (m) for (i = 1; i <= m; ++i) print med[i]; else for (i = 1; i <= s; ++i) print single[i] }' "$out")
 done
 
 echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)" | tee -a "$summary"
