@@ -200,7 +200,8 @@ void Controller::setSpeedScale(double s) {
 
 GraspFrameState Controller::graspFrame() const {
   const ObservedState& obs = integrator_.state();
-  return graspFrameState(obs, obs.acceleration, tracking_->graspOffset(), tcpPose().linear());
+  const double wrist = data_.q[kArmDofs - 1] - 0.5 * (model_.q_min[kArmDofs - 1] + model_.q_max[kArmDofs - 1]);
+  return graspFrameState(obs, obs.acceleration, tracking_->graspOffset(), tcpPose().linear(), wrist);
 }
 
 Isometry Controller::tcpPose() const { return framePlacement(model_, data_, tcp_id_); }

@@ -38,18 +38,25 @@ Matrix3 graspRotation(const ObservedState& obs, const GraspOffset& offset, const
 }
 
 GraspFrameState graspFrameState(const ObservedState& obs, const Vector6& alphadot_obs, const GraspOffset& offset,
-                                const Matrix3& R_ee) {
+                                const Matrix3& R_ee, double wrist_angle) {
   GraspFrameState s;
   const Matrix3 R_g = graspRotation(obs, offset, R_ee);
   // R_obs * Rot(phi) = R_g R_grasp^obs' carries the grasp point with the chosen grasp
   const Vector3 r = R_g * offset.placement.linear().transpose() * offset.placement.translation();
   const Vector3 w = obs.velocity.tail<3>();
   const Vector3 wdot = alphadot_obs.tail<3>();
-  // the half-turned twin of a parallel-jaw grasp, if nearer to the gripper
-  // (trace(R_ee' R) grows as the rotation between them shrinks)
-  const Matrix3 R_twin = R_g * Eigen::AngleAxisd(M_PI, Vector3::UnitZ()).toRotationMatrix();
-  const bool twin = offset.parallel_gripper && (R_ee.transpose() * R_twin).trace() > (R_ee.transpose() * R_g).trace();
-  s.pose.linear() = twin ? R_twin : R_g;
+  // the half-turned twin of a parallel-jaw grasp: the one whose turn phi
+  // about the tool axis leaves the wrist joint (at wrist_angle from its
+  // middle) nearest the middle; wrist_angle + phi is the joint's goal, which
+  // moving toward either twin does not change, so the choice cannot chatter
+  bool twin = false;
+  if (offset.parallel_gripper) {
+    const Matrix3 R_rel = R_ee.transpose() * R_g;
+    const double phi = std::atan2(R_rel(1, 0) - R_rel(0, 1), R_rel(0, 0) + R_rel(1, 1));
+    const double phi_twin = phi > 0.0 ? phi - M_PI : phi + M_PI;
+    twin = std::abs(wrist_angle + phi_twin) < std::abs(wrist_angle + phi);
+  }
+  s.pose.linear() = twin ? Matrix3(R_g * Eigen::AngleAxisd(M_PI, Vector3::UnitZ()).toRotationMatrix()) : R_g;
   s.pose.translation() = obs.pose.translation() + r;
   s.velocity.head<3>() = obs.velocity.head<3>() + w.cross(r);
   s.velocity.tail<3>() = w;

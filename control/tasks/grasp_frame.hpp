@@ -27,9 +27,11 @@ struct GraspOffset {
   Vector3 base = Vector3::Zero();
   /// A parallel-jaw gripper grasps the same way after a half turn about its
   /// approach axis (grasp z): of the grasp orientation and its half-turned
-  /// twin, track the one nearer to the gripper. Only for an empty gripper (a
-  /// held object would turn with it). Points keep their place: the lever
-  /// arm is computed from the unturned frame.
+  /// twin, track the one that leaves the last (wrist) joint nearest the
+  /// middle of its range (the tool axis is that joint's axis, so a turn phi
+  /// about it moves the joint by phi). Only for an empty gripper (a held
+  /// object would turn with it). Points keep their place: the lever arm is
+  /// computed from the unturned frame.
   bool parallel_gripper = false;
 };
 
@@ -51,7 +53,9 @@ Matrix3 graspRotation(const ObservedState& obs, const GraspOffset& offset, const
 /// acceleration `alphadot_obs` (use obs.acceleration for the last solved one).
 /// R_ee picks the nearest grasp when the offset has a free axis (rotation about
 /// it is frozen for this evaluation).
+/// `wrist_angle`: the wrist joint's angle from the middle of its range (rad),
+/// used only to pick a parallel-gripper twin.
 GraspFrameState graspFrameState(const ObservedState& obs, const Vector6& alphadot_obs, const GraspOffset& offset,
-                                const Matrix3& R_ee);
+                                const Matrix3& R_ee, double wrist_angle = 0.0);
 
 }  // namespace handover::control

@@ -28,7 +28,9 @@ void TrajectoryTrackingTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen
 
   // grasp frame with zero object acceleration: its acceleration is then the
   // velocity-product term w x (w x r); the rest is in the alphadot_obs columns
-  const GraspFrameState g = graspFrameState(obs, Vector6::Zero(), offset_, R_ee);
+  // the wrist joint's angle from the middle of its range picks a parallel-gripper twin
+  const double wrist = data.q[kArmDofs - 1] - 0.5 * (model.q_min[kArmDofs - 1] + model.q_max[kArmDofs - 1]);
+  const GraspFrameState g = graspFrameState(obs, Vector6::Zero(), offset_, R_ee, wrist);
   const Vector3& r = g.lever;
   const Vector3 w_obs = obs.velocity.tail<3>();
   const Vector3 w_ee = v_ee.tail<3>();
