@@ -84,6 +84,14 @@ to_us() {
                                    if (f < 0) print "?"; else printf "%.3f", v * f }'
 }
 
+# microseconds -> "0.084 us", "9.81 us", "16.9 ms" (3 significant digits)
+pretty() {
+  awk -v v="$1" 'BEGIN { if (v == "?") { print "?"; exit }
+                         u = "us"; if (v >= 1000) { v /= 1000; u = "ms" }
+                         d = (v >= 100) ? 0 : (v >= 10) ? 1 : (v >= 1) ? 2 : 3
+                         printf "%.*f %s", d, v, u }'
+}
+
 # --- run
 results="$build/bench-results"
 mkdir -p "$results"
@@ -93,7 +101,7 @@ host_cpu="$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)"
   echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')  commit: $(git -C "$repo" rev-parse --short HEAD 2>/dev/null || echo '?')"
   echo "machine: $(nproc) cores, ${host_cpu:-unknown cpu}; build type: ${build_type:-?}; repetitions: $reps x >= ${min_time}s"
   echo "load average before: $(cut -d' ' -f1-3 /proc/loadavg)"
-  printf '%-48s %12s %12s %10s  %s\n' benchmark "median wall" "median CPU" target result
+  printf '%-52s %11s %11s %10s  %s\n' benchmark "median wall" "median CPU" target result
 } | tee "$summary"
 
 fails=0 misses=0
@@ -101,7 +109,7 @@ for i in "${!names[@]}"; do
   name="${names[$i]}"
   bin="$build/bench/${dirs[$i]}/$name"
   if [ ! -x "$bin" ]; then
-    printf '%-48s %s\n' "$name" "FAILED: no binary at $bin" | tee -a "$summary"
+    printf '%-52s %s\n' "$name" "FAILED: no binary at $bin" | tee -a "$summary"
     fails=$((fails + 1)); continue
   fi
   out="$results/$name.txt"
@@ -112,7 +120,7 @@ for i in "${!names[@]}"; do
          --benchmark_out="$results/$name.json" --benchmark_out_format=json >"$out" 2>&1 || rc=$?
   load_after="$(cut -d' ' -f1 /proc/loadavg)"
   if [ "$rc" -ne 0 ]; then
-    printf '%-48s %s\n' "$name" "FAILED: exit code $rc (see $out)" | tee -a "$summary"
+    printf '%-52s %s\n' "$name" "FAILED: exit code $rc (see $out)" | tee -a "$summary"
     fails=$((fails + 1)); continue
   fi
   if grep -q 'ERROR OCCURRED' "$out"; then
@@ -129,7 +137,7 @@ for i in "${!names[@]}"; do
     if [ -n "$t" ] && [ "$w" != "?" ]; then
       if awk -v w="$w" -v t="$t" 'BEGIN { exit !(w <= t) }'; then verdict="pass"; else verdict="FAIL"; misses=$((misses + 1)); fi
     fi
-    printf '%-48s %9s us %9s us %10s  %s\n' "$bm" "$w" "$c" "${t:+<= $t us}" "$verdict" | tee -a "$summary"
+    printf '%-52s %11s %11s %10s  %s\n' "$bm" "$(pretty "$w")" "$(pretty "$c")" "${t:+<= $t us}" "$verdict" | tee -a "$summary"
   done < <(awk '$1 ~ /^BM_/ && NF >= 5 && $2 ~ /^[0-9.]+$/ {
                  if ($1 ~ /_median$/) { n = $1; sub(/_median$/, "", n); med[++m] = n " " $2 " " $3 " " $4 " " $5 }
                  else if ($1 !~ /_(mean|stddev|cv)$/) single[++s] = $1 " " $2 " " $3 " " $4 " " $5 }
