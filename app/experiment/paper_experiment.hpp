@@ -1,0 +1,82 @@
+// The paper's experiment (section III) in simulation, without the state
+// machine: the scripted person brings the object to a place the controller
+// is not told; the arm reaches for it from the ready pose with one of two
+// controllers, and the run is logged and measured (experiment_metrics.hpp).
+//
+//   kMethod:   observation task -> grasp frame (rigid-body relations) ->
+//              trajectory-tracking task, coupled inside one QP (the grasp
+//              frame's acceleration is a function of the QP's alphadot_obs),
+//              tracking on from t = 0.
+//   kBaseline: a set-point end-effector pose task ("pose") toward the latest
+//              MEASURED grasp pose (measured object pose * grasp offset,
+//              updated when a 60 Hz sample arrives, no feed-forward),
+//              tracking task off, same stiffness/damping as the tracking task.
+//
+// Wiring per 1 ms step (as app/run/run_scenario.cpp): person -> simulator ->
+// pose sensor -> estimator -> controller -> simulator. Both controllers use
+// the scenario's controller config (or config/controller.yaml) and the
+// perception settings of config/perception.yaml. The observation task runs in
+// both (it only feeds the arm in kMethod); its state is logged for both.
+// Not real-time safe as a whole (it builds everything, then allocates nothing
+// per step except the reserved traces).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "app/experiment/experiment_metrics.hpp"
+#include "scenes/scenario/scenario.hpp"
+
+namespace handover::app {
+
+enum class ReachController { kMethod, kBaseline };
+const char* toString(ReachController c);
+/// "method" | "baseline"; throws InputError otherwise.
+ReachController parseReachController(const std::string& name);
+
+/// How the QP's joint accelerations reach the simulated arm.
+///  kTorque:         tau = M(q) qddot + h(q, qdot) on the measured state (inverse dynamics only).
+///  kJointReference: as the paper's experiment (mc_rtc on a Panda): the QP
+///                   runs on its own integrated joint state (q_ref, qdot_ref),
+///                   and a joint impedance tau = M qddot + h + Kp (q_ref - q) +
+///                   Kd (qdot_ref - qdot) makes the arm track it, so model
+///                   errors between the controller and MuJoCo do not bias the
+///                   soft task-space gains.
+enum class Execution { kTorque, kJointReference };
+const char* toString(Execution e);
+/// "torque" | "reference"; throws InputError otherwise.
+Execution parseExecution(const std::string& name);
+
+struct ExperimentOptions {
+  Execution execution = Execution::kJointReference;
+  /// Joint impedance of kJointReference, N m/rad and N m s/rad (the Panda's
+  /// usual joint-impedance example gains).
+  Eigen::Matrix<double, 7, 1> joint_stiffness = (Eigen::Matrix<double, 7, 1>() << 600, 600, 600, 600, 250, 150, 50).finished();
+  Eigen::Matrix<double, 7, 1> joint_damping = (Eigen::Matrix<double, 7, 1>() << 50, 50, 50, 20, 20, 20, 10).finished();
+  std::string out_dir;               ///< log.csv, metrics.json and plots go here; "" = write nothing
+  bool plots = true;                 ///< run scripts/plot_run.py on out_dir
+  int log_every_ms = 5;              ///< log.csv row period (metrics use every step)
+  std::optional<double> duration;    ///< s simulated; default: the scenario's duration
+  MetricThresholds thresholds;
+};
+
+struct ExperimentRun {
+  ReachController controller = ReachController::kMethod;
+  ExperimentMetrics metrics;
+  std::vector<ExperimentSample> samples;  ///< every control step
+  double wall_time = 0.0;                 ///< s
+};
+
+/// Runs one controller on the scenario (human_to_robot, person holding the
+/// object; InputError otherwise or for bad files) and, with out_dir, writes
+/// out_dir/log.csv, out_dir/metrics.json and (plots) the PNGs.
+ExperimentRun runPaperExperiment(const scenario::Scenario& scenario, ReachController controller,
+                                 const ExperimentOptions& options);
+
+/// Method and baseline side by side, one line per metric.
+std::string formatComparison(const ExperimentMetrics& method, const ExperimentMetrics& baseline);
+
+}  // namespace handover::app
