@@ -51,7 +51,7 @@ const char* toString(Execution e);
 Execution parseExecution(const std::string& name);
 
 struct ExperimentOptions {
-  Execution execution = Execution::kJointReference;
+  Execution execution = Execution::kTorque;
   /// Joint impedance of kJointReference, N m/rad and N m s/rad (the Panda's
   /// usual joint-impedance example gains).
   Eigen::Matrix<double, 7, 1> joint_stiffness = (Eigen::Matrix<double, 7, 1>() << 600, 600, 600, 600, 250, 150, 50).finished();

@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
   double duration = 0.0;
   std::string only;
   bool no_plots = false;
-  std::string execution = "reference";
+  std::string execution = "torque";
   cli.add_option("scenario", scenario_path, "scenario file (human_to_robot)");
   cli.add_option("--out", out_dir, "output folder");
   cli.add_option("--duration", duration, "simulated seconds (default: the scenario's duration)")->check(CLI::PositiveNumber);
