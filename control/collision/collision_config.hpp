@@ -58,6 +58,11 @@ struct PersonSettings {
 struct CollisionConfig {
   std::string file;                 ///< where it was read from (messages)
   double broadphase_margin = 0.05;  ///< m, pairs farther than iDist + this are skipped
+  /// m/s^2, most acceleration away from a body a damper row may demand: a
+  /// person moving in faster than the robot can give way would otherwise make
+  /// the QP infeasible (the robot then yields at this rate, and the state
+  /// machine's safety stop takes over)
+  double max_escape_acceleration = 8.0;
   DamperSettings defaults;
   TableSettings table;
   PersonSettings person;

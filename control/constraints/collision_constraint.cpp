@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "control/constraints/collision_constraint.hpp"
 
 #include <limits>
@@ -13,7 +14,8 @@ CollisionConstraint::CollisionConstraint(const Model& model, const CollisionConf
     : name_(std::move(name)),
       cmodel_(buildCollisionModel(model, config)),
       cdata_(cmodel_),
-      dampers_(cmodel_.pairs.size()) {}
+      dampers_(cmodel_.pairs.size()),
+      max_escape_(config.max_escape_acceleration) {}
 
 void CollisionConstraint::setRuleEnabled(int rule, bool enabled) {
   control::setRuleEnabled(cdata_, rule, enabled);
@@ -54,7 +56,10 @@ int CollisionConstraint::compute(const ControlContext& ctx, Eigen::Ref<Eigen::Ma
 
     C.row(rows).setZero();
     C.row(rows).segment<kArmDofs>(VariableLayout::kQdd) = r.jacobian;
-    lb[rows] = damperLowerBound(r.distance, r.d_dot, r.drift, st.xi, s, ctx.dt);
+    // d_ddot = Jd qddot + drift >= demand, the demand capped at what the arm
+    // can give (keeps the QP feasible when the person moves in fast)
+    const double demand = damperLowerBound(r.distance, r.d_dot, r.drift, st.xi, s, ctx.dt) + r.drift;
+    lb[rows] = std::min(demand, max_escape_) - r.drift;
     ub[rows] = inf;
     ++rows;
   }

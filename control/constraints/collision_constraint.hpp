@@ -67,6 +67,7 @@ class CollisionConstraint : public Constraint {
   CollisionData cdata_;
   CollisionEnvironment env_;
   std::vector<DamperState> dampers_;
+  double max_escape_ = 8.0;  ///< m/s^2, cap on a row's demanded d_ddot
 };
 
 /// The bound of one damper row in chi space, for a pair with distance d,

@@ -82,9 +82,12 @@ struct Sim {
   }
 };
 
-CollisionConfig tableConfig(const std::string& damping) {
-  return parseCollisionConfig("pairs:\n  - {name: table, robot: [panda_link5*, panda_link6, panda_link7*, panda_hand*], "
-                              "other: table, damping: " + damping + "}\n",
+// `cap`: max_escape_acceleration; large by default so the tests below see
+// the damper's own algebra
+CollisionConfig tableConfig(const std::string& damping, double cap = 1000.0) {
+  return parseCollisionConfig("max_escape_acceleration: " + std::to_string(cap) +
+                                  "\npairs:\n  - {name: table, robot: [panda_link5*, panda_link6, panda_link7*, "
+                                  "panda_hand*], other: table, damping: " + damping + "}\n",
                               "table.yaml");
 }
 
@@ -164,8 +167,37 @@ TEST(CollisionConstraint, KeepsTheTableDistanceAboveSafety) {
   }
 }
 
+TEST(CollisionConstraint, EscapeDemandIsCappedAndOtherwiseUnchanged) {
+  const double cap = 2.0;
+  Sim capped(tableConfig("auto", cap)), free(tableConfig("auto"));
+  std::mt19937 rng(9);
+  int saturated = 0, unchanged = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const Vector7 q = randomConfiguration(capped.m, rng), v = randomVelocity(rng);
+    const int n = capped.rows(q, v);
+    ASSERT_EQ(n, free.rows(q, v));
+    const auto& cm = capped.constraint.collisionModel();
+    const auto& cd = capped.constraint.collisionData();
+    int row = 0;
+    for (int k = 0; k < cm.numPairs(); ++k) {
+      if (!(cd.results[k].active && cd.results[k].distance < cm.pairs[k].damper.i_dist)) continue;
+      const double drift = cd.results[k].drift;
+      // the demanded d_ddot (= row bound + drift) never exceeds the cap, and
+      // is the uncapped demand whenever that one is below it
+      const double demand = capped.lb[row] + drift, uncapped = free.lb[row] + drift;
+      EXPECT_LE(demand, cap + 1e-9);
+      EXPECT_NEAR(demand, std::min(uncapped, cap), 1e-9);
+      (uncapped > cap ? saturated : unchanged) += 1;
+      ++row;
+    }
+  }
+  EXPECT_GT(saturated, 0) << "no state needed the cap: the test proves nothing";
+  EXPECT_GT(unchanged, 0);
+}
+
 TEST(CollisionConstraint, KeepsThePersonsForearmAwayAndRelaxesOnRequest) {
   const CollisionConfig cfg = parseCollisionConfig(R"(
+max_escape_acceleration: 1000.0
 person: {margin: 0.02}
 pairs:
   - {name: person_arm, robot: [panda_link5*, panda_link6, panda_link7*, panda_hand*], other: human_forearm}

@@ -82,7 +82,7 @@ TEST(ControllerHandle, PreemptedPathLeavesOnlyTheStopsChanges) {
   rig.world.moveHand(Vector3(0.55, 0.0, 0.30), 0.5);
   ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
   rig.world.hand = Vector3(2.0, 0, 0);  // hand far from the TCP, arm close
-  rig.world.human_distance = 0.05;
+  rig.world.human_distance = 0.02;
   rig.step();
   ASSERT_EQ(rig.fsm->activePath(), "SafetyStop");
   const ScopedCommands& cur = rig.fsm->context().ledger->current();

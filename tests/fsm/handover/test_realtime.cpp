@@ -38,7 +38,7 @@ TEST(HandoverRealtime, TakeWithSafetyEventsDoesNotAllocate) {
   auto gripped_since = std::make_shared<double>(-1.0);
   rig.person = [gripped_since](World& w) {
     if (w.time > 0.1 && w.time < 0.15) w.arm_distance = 0.15;      // slow down
-    else if (w.time > 0.2 && w.time < 0.3) w.arm_distance = 0.05;  // stop
+    else if (w.time > 0.2 && w.time < 0.3) w.arm_distance = 0.02;  // stop
     else w.arm_distance = 1.0;
     if (!w.robot_grip) return;
     if (*gripped_since < 0) *gripped_since = w.time;

@@ -30,7 +30,7 @@ TEST(HandoverSafety, TooCloseStopsTearsDownAndResumes) {
   ASSERT_TRUE(rig.runUntilState("/Approach", 5.0));
   ASSERT_TRUE(rig.ctl.tracking);
   const double gripper = rig.ctl.gripper_width;
-  rig.world.arm_distance = 0.05;  // the forearm pushes in
+  rig.world.arm_distance = 0.02;  // the forearm pushes in
   rig.step();
   EXPECT_EQ(rig.fsm->activePath(), "SafetyStop");
   // the approach's tracking and observation were removed, the TCP is held
@@ -58,7 +58,7 @@ TEST(HandoverSafety, HandInGraspZoneIsNotAnIntrusion) {
   Rig rig;
   rig.world.moveHand(kMeet, 0.5);
   ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
-  rig.world.human_distance = 0.05;  // the hand is at the gripper: that is the handover
+  rig.world.human_distance = 0.02;  // the hand is at the gripper: that is the handover
   rig.runFor(0.2);
   EXPECT_NE(rig.fsm->activePath(), "SafetyStop");
   EXPECT_EQ(rig.fsm->stats().safety_stops, 0);
@@ -71,12 +71,12 @@ TEST(HandoverSafety, HandAtTheTrackingTargetIsNotAnIntrusionButTheForearmIs) {
   ASSERT_TRUE(rig.runUntilState("/Approach", 5.0));
   // the hand is where the gripper is going (the grasp frame), the TCP still
   // farther than the grasp-zone radius: closeness of the hand is the handover
-  rig.world.human_distance = 0.05;
+  rig.world.human_distance = 0.02;
   rig.runFor(0.2);
   EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Approach"));
   EXPECT_EQ(rig.fsm->stats().safety_stops, 0);
   // the same closeness of the forearm stops the robot
-  rig.world.arm_distance = 0.05;
+  rig.world.arm_distance = 0.02;
   rig.step();
   EXPECT_EQ(rig.fsm->activePath(), "SafetyStop");
 }
@@ -86,7 +86,7 @@ TEST(HandoverSafety, NoInterruptOnceDone) {
   rig.world.moveHand(kMeet, 0.5);
   rig.world.dropout = true;  // nobody is seen: wait times out
   ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 25.0));
-  rig.world.human_distance = 0.05;
+  rig.world.human_distance = 0.02;
   rig.runFor(0.1);
   EXPECT_EQ(rig.fsm->activePath(), "Aborted");
   EXPECT_EQ(rig.fsm->stats().safety_stops, 0);
