@@ -13,6 +13,7 @@
 #include "app/run/controller_adapter.hpp"
 #include "app/run/run_log.hpp"
 #include "app/run/sensed_velocity.hpp"
+#include "app/run/world_setup.hpp"
 #include "config/input_error.hpp"
 #include "control/collision/collision_config.hpp"
 #include "control/collision/collision_distances.hpp"
@@ -40,50 +41,6 @@ namespace handover::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::string sourcePath(const std::string& rel) { return std::string(HANDOVER_SOURCE_DIR) + "/" + rel; }
-
-sim::SimOptions simOptions(const scenario::Scenario& sc) {
-  sim::SimOptions o;
-  switch (sc.object.shape) {
-    case scenario::Shape::Cylinder: o.object.shape = sim::ObjectShape::Cylinder; break;
-    case scenario::Shape::Box: o.object.shape = sim::ObjectShape::Box; break;
-    case scenario::Shape::Sphere: o.object.shape = sim::ObjectShape::Sphere; break;
-  }
-  o.object.size = sc.object.size;
-  o.object.mass = sc.object.mass;
-  const scenario::BodyDimensions body = scenario::bodyDimensionsFromHeight(sc.human.height);
-  o.human.height = sc.human.height;
-  o.human.upper_arm_length = body.upper_arm;
-  o.human.forearm_length = body.forearm;
-  return o;
-}
-
-/// Opening (m) the fingers need around the object along the grasp frame's y axis.
-double objectWidthAcrossFingers(const scenario::ObjectSpec& obj) {
-  const Eigen::Vector3d y_obj = obj.grasp.linear().col(1);  // finger closing axis in the object frame
-  switch (obj.shape) {
-    case scenario::Shape::Sphere: return 2.0 * obj.size[0];
-    case scenario::Shape::Cylinder: {
-      // across the axis: the diameter; along it: the height
-      const double along = std::abs(y_obj.z());
-      return along > 0.7 ? obj.size[1] : 2.0 * obj.size[0];
-    }
-    case scenario::Shape::Box:
-      return std::abs(y_obj.x()) * obj.size[0] + std::abs(y_obj.y()) * obj.size[1] + std::abs(y_obj.z()) * obj.size[2];
-  }
-  return 0.08;
-}
-
-control::GraspOffset graspOffset(const scenario::ObjectSpec& obj) {
-  control::GraspOffset g;
-  g.placement = obj.grasp;
-  if (obj.free_axis >= 0) {
-    g.has_free_axis = true;
-    g.free_axis = control::Vector3::Unit(obj.free_axis);
-  }
-  return g;
-}
 
 /// Which of the person's bodies a distance covers.
 enum class PersonPart { kAll, kHand, kArm };
@@ -152,7 +109,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   const int gripper_rule = collision->collisionModel().ruleIndex("person_hand_gripper");
 
   sim::Simulation sim;
-  sim.load(simOptions(sc));
+  sim.load(simOptionsFor(sc));
   human::ScriptedHuman person(sc);
   perception::SimulatedPoseSensor sensor(sc.sensor, static_cast<std::uint64_t>(sc.seed));
   const perception::PerceptionConfig pcfg =
@@ -166,7 +123,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   target_settings.blend_time = pcfg.blend_time;
   perception::ObservationTarget obs_target(target_settings);
 
-  const control::GraspOffset grasp = graspOffset(sc.object);
+  const control::GraspOffset grasp = graspOffsetFor(sc.object);
   ControllerAdapter adapter(controller, obs_target, grasp, 0.08);
   fsm::ObjectInfo object_info;
   object_info.mass = sc.object.mass;
