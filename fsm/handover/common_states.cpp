@@ -50,16 +50,25 @@ void Retract::configure(const YamlReader& def) {
   pos_tol_ = readPositive(def, "position_tolerance", 0.5);
   rot_tol_ = readPositive(def, "orientation_tolerance_deg", 180.0) * kDeg;
   settle_speed_ = readPositive(def, "settle_speed", 1.0);
+  if (auto k = def.optionalChild("keep_yaw")) keep_yaw_ = k->asBool();
 }
 
 void Retract::onStart(HandoverContext& ctx) {
+  goal_ = namedPose(*ctx.params, pose_);
+  if (keep_yaw_) {
+    // the named pose turned about the vertical to the TCP's current turn: no
+    // pointless wrist rotation while carrying the object away
+    const Eigen::Matrix3d M = ctx.in.tcp_pose.linear() * goal_.linear().transpose();
+    const double yaw = std::atan2(M(1, 0) - M(0, 1), M(0, 0) + M(1, 1));
+    goal_.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * goal_.linear();
+  }
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(ObservationTarget::kNone);
-  ctrl().setPoseTarget(namedPose(*ctx.params, pose_));
+  ctrl().setPoseTarget(goal_);
 }
 
 bool Retract::onRun(HandoverContext& ctx) {
-  const Isometry& goal = namedPose(*ctx.params, pose_);
+  const Isometry& goal = goal_;
   if (positionError(ctx.in.tcp_pose, goal) <= pos_tol_ && rotationError(ctx.in.tcp_pose, goal) <= rot_tol_ &&
       ctx.in.tcp_velocity.head<3>().norm() <= settle_speed_) {
     setOutput(stowed_);

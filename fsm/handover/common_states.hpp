@@ -42,6 +42,8 @@ class Retract : public HandoverState {
   int stowed_;
   std::string pose_ = "stow";
   double pos_tol_ = 0.02, rot_tol_ = 0.1, settle_speed_ = 0.02;
+  bool keep_yaw_ = false;               ///< keep the TCP's turn about the vertical
+  Isometry goal_ = Isometry::Identity();
 };
 
 /// [Retry, GiveUp] After an abort: counts it, goes to the safe pose, then
