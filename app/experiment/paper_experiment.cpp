@@ -9,8 +9,11 @@
 #include <sstream>
 
 #include "app/experiment/experiment_log.hpp"
+#include "app/run/world_setup.hpp"
 #include "config/input_error.hpp"
 #include "control/controller.hpp"
+#include "fsm/handover/handover_fsm.hpp"
+#include "fsm/handover/handover_params.hpp"
 #include "perception/perception_config.hpp"
 #include "perception/perception_estimator.hpp"
 #include "perception/simulated_pose_sensor.hpp"
@@ -36,25 +39,35 @@ Execution parseExecution(const std::string& name) {
   throw InputError("unknown execution '" + name + "' (expected torque or reference)");
 }
 
-namespace {
+const char* toString(GainSet g) { return g == GainSet::kPaper ? "paper" : "phase"; }
 
-std::string sourcePath(const std::string& rel) { return std::string(HANDOVER_SOURCE_DIR) + "/" + rel; }
-
-sim::SimOptions simOptionsFor(const scenario::Scenario& sc) {
-  sim::SimOptions o;
-  switch (sc.object.shape) {
-    case scenario::Shape::Cylinder: o.object.shape = sim::ObjectShape::Cylinder; break;
-    case scenario::Shape::Box: o.object.shape = sim::ObjectShape::Box; break;
-    case scenario::Shape::Sphere: o.object.shape = sim::ObjectShape::Sphere; break;
-  }
-  o.object.size = sc.object.size;
-  o.object.mass = sc.object.mass;
-  const scenario::BodyDimensions body = scenario::bodyDimensionsFromHeight(sc.human.height);
-  o.human.height = sc.human.height;
-  o.human.upper_arm_length = body.upper_arm;
-  o.human.forearm_length = body.forearm;
-  return o;
+GainSet parseGainSet(const std::string& name) {
+  if (name == "paper") return GainSet::kPaper;
+  if (name == "phase") return GainSet::kHandoverPhase;
+  throw InputError("unknown gain set '" + name + "' (expected paper or phase)");
 }
+
+std::pair<double, double> handoverPhaseStiffness() {
+  const std::string path = fsm::HandoverFsm::defaultConfigPath();
+  const fsm::HandoverParams p = fsm::loadHandoverParams(YamlReader::loadFile(path).child("params"));
+  if (!(p.tracking_translation_stiffness > 0.0) || !(p.tracking_orientation_stiffness > 0.0))
+    throw InputError(path + ": params.tracking must set translation_stiffness and orientation_stiffness > 0");
+  return {p.tracking_translation_stiffness, p.tracking_orientation_stiffness};
+}
+
+control::GraspOffset preGraspOffset(const scenario::ObjectSpec& object, double standoff) {
+  if (!(standoff >= 0.0) || !std::isfinite(standoff))
+    throw InputError("paper experiment: standoff must be a finite distance >= 0 m");
+  control::GraspOffset g = graspOffsetFor(object);  // placement and free axis
+  g.placement = g.placement * Eigen::Translation3d(0.0, 0.0, -standoff);
+  // as ControllerAdapter::applyOffset for the object with an empty gripper
+  g.approach_from_base = true;
+  g.base = control::Vector3::Zero();
+  g.parallel_gripper = true;
+  return g;
+}
+
+namespace {
 
 control::ControllerConfig controllerConfigFor(const scenario::Scenario& sc) {
   return sc.config && !sc.config.IsNull() ? control::parseControllerConfig(YamlReader(sc.config, sc.config_path, ""))
@@ -73,17 +86,21 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
   // -- build everything once ------------------------------------------------
   const control::ControllerConfig cfg = controllerConfigFor(sc);
   control::Controller controller(control::loadModel(sourcePath("scenes/panda.urdf")), cfg);
-  control::GraspOffset grasp;
-  grasp.placement = sc.object.grasp;
-  if (sc.object.free_axis >= 0) {
-    grasp.has_free_axis = true;
-    grasp.free_axis = control::Vector3::Unit(sc.object.free_axis);
-  }
-  controller.setGraspOffset(grasp);  // before reset(): it places the observed object at the TCP
+  // the reach meets the pre-grasp frame (method: through the observed object)
+  const control::GraspOffset target_offset = preGraspOffset(sc.object, opt.standoff);
+  controller.setGraspOffset(target_offset);  // before reset(): it places the observed object at the TCP
   const bool method = which == ReachController::kMethod;
-  if (!method) {
+  control::PdGains k_trans = cfg.tracking.translation.gains, k_rot = cfg.tracking.orientation.gains;
+  if (opt.gains == GainSet::kHandoverPhase) {
+    const auto [kt, ko] = handoverPhaseStiffness();
+    k_trans = control::PdGains::critical(kt);
+    k_rot = control::PdGains::critical(ko);
+  }
+  if (method) {
+    controller.trackingTask().setGains(k_trans, k_rot);
+  } else {
     // the baseline: a set point with the tracking task's own gains
-    controller.poseTask().setGains(cfg.tracking.translation.gains, cfg.tracking.orientation.gains);
+    controller.poseTask().setGains(k_trans, k_rot);
     controller.setTaskEnabled("tracking", false);
     controller.setTaskEnabled("pose", true);
   }
@@ -118,11 +135,22 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
   const std::size_t steps = static_cast<std::size_t>(std::ceil(duration / dt)) + 1;
   ExperimentRun run;
   run.controller = which;
+  run.gains = opt.gains;
+  run.translation_stiffness = k_trans.stiffness;
+  run.orientation_stiffness = k_rot.stiffness;
   run.samples.reserve(steps);
   ExperimentLog log;
   const int log_every = std::max(1, opt.log_every_ms);
   log.reserve(steps / static_cast<std::size_t>(log_every) + 2);
   const control::Model& model = controller.model();
+  // the target frame of a resting object pose, by the controller's own rule
+  // (free axis, approach side, parallel-gripper twin picked by the wrist)
+  const double wrist_mid = 0.5 * (model.q_min[6] + model.q_max[6]);
+  auto targetFrame = [&](const Eigen::Isometry3d& object_pose, const Eigen::Matrix3d& R_tcp, double q_wrist) {
+    control::ObservedState at_rest;
+    at_rest.pose = object_pose;
+    return control::graspFrameState(at_rest, control::Vector6::Zero(), target_offset, R_tcp, q_wrist - wrist_mid).pose;
+  };
 
   bool have_measurement = false;
   double last_stamp = -1.0;
@@ -148,6 +176,7 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
     estimator.update(t, sensor);
     const perception::PerceptionEstimate& est = estimator.estimate(t, perception::ObjectHolder::Person);
     const bool valid = est.object.valid && !est.object.stale;
+    const sim::ArmState arm = sim.armState();
     if (valid) {
       measured = est.object.pose;
       if (!have_measurement) controller.resetObservedObject(measured);  // start the observer on the data
@@ -155,14 +184,13 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
       // the baseline's set point moves only when a new sample arrives
       if (est.human.stamp != last_stamp) {
         last_stamp = est.human.stamp;
-        set_point = measured * sc.object.grasp;
+        set_point = targetFrame(measured, controller.tcpPose().linear(), arm.q[6]);
         if (!method) controller.setPoseTarget(set_point);
       }
     }
     controller.setObservationTarget(measured, valid);
 
     // the QP, then torques to the simulator
-    const sim::ArmState arm = sim.armState();
     cin.time = t;
     cin.q = reference_mode ? q_ref : arm.q;
     cin.qd = reference_mode ? qd_ref : arm.qd;
@@ -187,8 +215,8 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
     s.measured_valid = have_measurement;
     s.observed = controller.observedState().pose;
     s.reference = method ? controller.graspFrame().pose : set_point;
-    s.grasp_true = obj_true.pose * sc.object.grasp;
     s.tcp = sim.tcpPose();
+    s.grasp_true = targetFrame(obj_true.pose, s.tcp.linear(), arm.q[6]);
     s.hand_speed = hout.hand_speed;
     ExperimentArmRow row;
     row.q = arm.q;
@@ -236,41 +264,53 @@ std::string num(double v, const char* fmt) { return num(std::optional<double>(v)
 std::string yesNo(const std::optional<bool>& b) { return b ? (*b ? "yes" : "no") : "-"; }
 }  // namespace
 
-std::string formatComparison(const ExperimentMetrics& a, const ExperimentMetrics& b) {
+std::string formatComparison(const std::vector<std::pair<std::string, ExperimentMetrics>>& runs) {
   std::ostringstream os;
-  char line[200];
-  auto row = [&](const char* name, const std::string& x, const std::string& y) {
-    std::snprintf(line, sizeof line, "%-44s %14s %14s\n", name, x.c_str(), y.c_str());
-    os << line;
+  char cell[64];
+  auto row = [&](const char* name, const auto& value_of) {
+    std::snprintf(cell, sizeof cell, "%-46s", name);
+    os << cell;
+    for (const auto& [label, m] : runs) {
+      std::snprintf(cell, sizeof cell, " %16s", value_of(m, label).c_str());
+      os << cell;
+    }
+    os << "\n";
   };
-  row("metric", "method", "baseline");
-  row("obs error vs true, pos RMS / max (mm)", num(a.obs_pos_vs_true.rms * 1e3, "%.2f") + " / " + num(a.obs_pos_vs_true.max * 1e3, "%.1f"),
-      num(b.obs_pos_vs_true.rms * 1e3, "%.2f") + " / " + num(b.obs_pos_vs_true.max * 1e3, "%.1f"));
-  row("obs error vs true, rot RMS / max (deg)", num(a.obs_rot_vs_true.rms, "%.2f") + " / " + num(a.obs_rot_vs_true.max, "%.1f"),
-      num(b.obs_rot_vs_true.rms, "%.2f") + " / " + num(b.obs_rot_vs_true.max, "%.1f"));
-  row("obs error vs measured, pos RMS / max (mm)", num(a.obs_pos_vs_measured.rms * 1e3, "%.2f") + " / " + num(a.obs_pos_vs_measured.max * 1e3, "%.1f"),
-      num(b.obs_pos_vs_measured.rms * 1e3, "%.2f") + " / " + num(b.obs_pos_vs_measured.max * 1e3, "%.1f"));
-  row("obs error vs measured, rot RMS / max (deg)", num(a.obs_rot_vs_measured.rms, "%.2f") + " / " + num(a.obs_rot_vs_measured.max, "%.1f"),
-      num(b.obs_rot_vs_measured.rms, "%.2f") + " / " + num(b.obs_rot_vs_measured.max, "%.1f"));
-  row("TCP vs its reference, pos RMS (mm)", num(a.track_pos.rms * 1e3, "%.1f"), num(b.track_pos.rms * 1e3, "%.1f"));
-  row("TCP vs its reference, rot RMS (deg)", num(a.track_rot.rms, "%.2f"), num(b.track_rot.rms, "%.2f"));
-  row("TCP vs true grasp, pos RMS (mm)", num(a.true_pos.rms * 1e3, "%.1f"), num(b.true_pos.rms * 1e3, "%.1f"));
-  row("TCP vs true grasp, rot RMS (deg)", num(a.true_rot.rms, "%.2f"), num(b.true_rot.rms, "%.2f"));
-  row("final error vs true grasp (mm)", num(a.final_pos_error * 1e3, "%.2f"), num(b.final_pos_error * 1e3, "%.2f"));
-  row("final error vs true grasp (deg)", num(a.final_rot_error_deg, "%.2f"), num(b.final_rot_error_deg, "%.2f"));
-  row("hand at rest from (s)", num(a.hand_rest_time, "%.3f"), num(b.hand_rest_time, "%.3f"));
-  row("within 1 cm and 5 deg from (s)", num(a.reached_time, "%.3f"), num(b.reached_time, "%.3f"));
-  row("hand at rest -> reached (s)", num(a.rest_to_reached, "%.3f"), num(b.rest_to_reached, "%.3f"));
-  row("orientation within 5 deg from (s)", num(a.orientation_settle_time, "%.3f"), num(b.orientation_settle_time, "%.3f"));
-  row("position within 1 cm from (s)", num(a.position_settle_time, "%.3f"), num(b.position_settle_time, "%.3f"));
-  row("orientation converges first", yesNo(a.orientation_first), yesNo(b.orientation_first));
-  row("limit violations pos/vel/torque (steps)",
-      std::to_string(a.position_violations) + "/" + std::to_string(a.velocity_violations) + "/" + std::to_string(a.torque_violations),
-      std::to_string(b.position_violations) + "/" + std::to_string(b.velocity_violations) + "/" + std::to_string(b.torque_violations));
-  row("QP failures (steps)", std::to_string(a.qp_failures), std::to_string(b.qp_failures));
-  row("finger-object / robot-person contact (steps)",
-      std::to_string(a.finger_object_contact_steps) + "/" + std::to_string(a.person_contact_steps),
-      std::to_string(b.finger_object_contact_steps) + "/" + std::to_string(b.person_contact_steps));
+  using M = ExperimentMetrics;
+  using S = std::string;
+  row("metric", [](const M&, const S& label) { return label; });
+  row("obs error vs true, pos RMS / max (mm)", [](const M& m, const S&) {
+    return num(m.obs_pos_vs_true.rms * 1e3, "%.2f") + " / " + num(m.obs_pos_vs_true.max * 1e3, "%.1f");
+  });
+  row("obs error vs true, rot RMS / max (deg)", [](const M& m, const S&) {
+    return num(m.obs_rot_vs_true.rms, "%.2f") + " / " + num(m.obs_rot_vs_true.max, "%.1f");
+  });
+  row("obs error vs measured, pos RMS / max (mm)", [](const M& m, const S&) {
+    return num(m.obs_pos_vs_measured.rms * 1e3, "%.2f") + " / " + num(m.obs_pos_vs_measured.max * 1e3, "%.1f");
+  });
+  row("obs error vs measured, rot RMS / max (deg)", [](const M& m, const S&) {
+    return num(m.obs_rot_vs_measured.rms, "%.2f") + " / " + num(m.obs_rot_vs_measured.max, "%.1f");
+  });
+  row("TCP vs its reference, pos RMS (mm)", [](const M& m, const S&) { return num(m.track_pos.rms * 1e3, "%.1f"); });
+  row("TCP vs its reference, rot RMS (deg)", [](const M& m, const S&) { return num(m.track_rot.rms, "%.2f"); });
+  row("TCP vs true pre-grasp, pos RMS (mm)", [](const M& m, const S&) { return num(m.true_pos.rms * 1e3, "%.1f"); });
+  row("TCP vs true pre-grasp, rot RMS (deg)", [](const M& m, const S&) { return num(m.true_rot.rms, "%.2f"); });
+  row("final error vs true pre-grasp (mm)", [](const M& m, const S&) { return num(m.final_pos_error * 1e3, "%.2f"); });
+  row("final error vs true pre-grasp (deg)", [](const M& m, const S&) { return num(m.final_rot_error_deg, "%.2f"); });
+  row("hand at rest from (s)", [](const M& m, const S&) { return num(m.hand_rest_time, "%.3f"); });
+  row("within 1 cm and 5 deg from (s)", [](const M& m, const S&) { return num(m.reached_time, "%.3f"); });
+  row("hand at rest -> reached (s)", [](const M& m, const S&) { return num(m.rest_to_reached, "%.3f"); });
+  row("orientation within 5 deg from (s)", [](const M& m, const S&) { return num(m.orientation_settle_time, "%.3f"); });
+  row("position within 1 cm from (s)", [](const M& m, const S&) { return num(m.position_settle_time, "%.3f"); });
+  row("orientation converges first", [](const M& m, const S&) { return yesNo(m.orientation_first); });
+  row("limit violations pos/vel/torque (steps)", [](const M& m, const S&) {
+    return std::to_string(m.position_violations) + "/" + std::to_string(m.velocity_violations) + "/" +
+           std::to_string(m.torque_violations);
+  });
+  row("QP failures (steps)", [](const M& m, const S&) { return std::to_string(m.qp_failures); });
+  row("finger-object / robot-person contact (steps)", [](const M& m, const S&) {
+    return std::to_string(m.finger_object_contact_steps) + "/" + std::to_string(m.person_contact_steps);
+  });
   return os.str();
 }
 
