@@ -27,7 +27,7 @@ using testing::CsvTable;
 using testing::Json;
 using testing::ScratchDir;
 
-struct Run {
+struct RunResult {
   scenario::Scenario scenario;
   app::RunSummary summary;
   std::string out_dir;
@@ -36,10 +36,10 @@ struct Run {
 /// Copies scenes/scenarios/<name>.yaml into `dir`, parses the copy and runs it
 /// with log.csv and summary.json written to dir/out (no plots: those are the
 /// command line's, tested in tests/app/cli).
-Run runShipped(const ScratchDir& dir, const std::string& name) {
+RunResult runShipped(const ScratchDir& dir, const std::string& name) {
   const std::string copy = dir.file(name + ".yaml");
   testing::writeText(copy, testing::readText(testing::repoPath("scenes/scenarios/" + name + ".yaml")));
-  Run r;
+  RunResult r;
   r.scenario = scenario::parseScenario(copy);
   app::RunOptions opt;
   opt.out_dir = dir.file("out");
@@ -105,7 +105,7 @@ std::vector<std::string> documentedLogColumns() {
 
 /// summary.json holds every key of design-notes section 4, with the right
 /// types, and agrees with the summary runScenario returned.
-void checkSummaryJson(const Run& run) {
+void checkSummaryJson(const RunResult& run) {
   SCOPED_TRACE("summary.json of " + run.scenario.name);
   Json j;
   ASSERT_NO_THROW(j = testing::parseJson(testing::readText(run.out_dir + "/summary.json")));
@@ -178,7 +178,7 @@ void checkSummaryJson(const Run& run) {
 
 /// log.csv: the documented header, rows as wide as it, time rising in
 /// --log-every steps up to the simulated time. Returns the table.
-CsvTable checkLogCsv(const Run& run) {
+CsvTable checkLogCsv(const RunResult& run) {
   SCOPED_TRACE("log.csv of " + run.scenario.name);
   const CsvTable t = testing::readCsv(run.out_dir + "/log.csv");
   EXPECT_EQ(t.header, documentedLogColumns());
@@ -204,7 +204,7 @@ CsvTable checkLogCsv(const Run& run) {
 }
 
 /// What every run should have: sane safety numbers and valid result files.
-void checkCommon(const Run& run) {
+void checkCommon(const RunResult& run) {
   const app::RunSummary& s = run.summary;
   EXPECT_EQ(s.human_contacts, 0);
   EXPECT_FALSE(s.object_dropped);
@@ -228,7 +228,7 @@ double objectWidth(const scenario::Scenario& sc) {
 
 TEST(RunEndToEnd, HumanToRobotTakesTheObject) {
   ScratchDir dir("run_h2r");
-  const Run run = runShipped(dir, "default");
+  const RunResult run = runShipped(dir, "default");
   const app::RunSummary& s = run.summary;
   ASSERT_EQ(s.mode, "human_to_robot");
   EXPECT_EQ(s.outcome, "success") << joined(s.states);
@@ -239,7 +239,9 @@ TEST(RunEndToEnd, HumanToRobotTakesTheObject) {
             (std::vector<std::string>{"WaitForOffer", "Approach", "Grasp", "WaitForRelease", "Retract", "Done"}))
       << joined(s.states);
   for (const auto& st : s.states)
-    if (st != "Done") EXPECT_NE(st.find("HumanToRobot/"), std::string::npos) << st;
+    if (st != "Done") {
+      EXPECT_NE(st.find("HumanToRobot/"), std::string::npos) << st;
+    }
   ASSERT_TRUE(s.time_to_grasp.has_value());
   EXPECT_GT(*s.time_to_grasp, 0.0);
   ASSERT_TRUE(s.total_time.has_value());
@@ -262,7 +264,7 @@ TEST(RunEndToEnd, HumanToRobotTakesTheObject) {
 
 TEST(RunEndToEnd, RobotToHumanGivesTheObject) {
   ScratchDir dir("run_r2h");
-  const Run run = runShipped(dir, "r2h_basic");
+  const RunResult run = runShipped(dir, "r2h_basic");
   const app::RunSummary& s = run.summary;
   ASSERT_EQ(s.mode, "robot_to_human");
   EXPECT_EQ(s.outcome, "success") << joined(s.states);
@@ -272,7 +274,9 @@ TEST(RunEndToEnd, RobotToHumanGivesTheObject) {
   EXPECT_TRUE(inOrder(seq, {"HoldReady", "Present", "Release", "ConfirmGone", "Retract", "Done"})) << joined(s.states);
   EXPECT_TRUE(endsWith(seq, {"Release", "ConfirmGone", "Retract", "Done"})) << joined(s.states);
   for (const auto& st : s.states)
-    if (st != "Done") EXPECT_NE(st.find("RobotToHuman/"), std::string::npos) << st;
+    if (st != "Done") {
+      EXPECT_NE(st.find("RobotToHuman/"), std::string::npos) << st;
+    }
   ASSERT_TRUE(s.total_time.has_value());
   EXPECT_LE(*s.total_time, run.scenario.duration);
   checkCommon(run);
@@ -290,7 +294,7 @@ TEST(RunEndToEnd, RobotToHumanGivesTheObject) {
 
 TEST(RunEndToEnd, PersonLeavesForGoodAborts) {
   ScratchDir dir("run_abort");
-  const Run run = runShipped(dir, "h2r_abort");
+  const RunResult run = runShipped(dir, "h2r_abort");
   const app::RunSummary& s = run.summary;
   EXPECT_EQ(s.outcome, "aborted") << joined(s.states);
   EXPECT_EQ(s.aborts, 1);
@@ -313,7 +317,7 @@ TEST(RunEndToEnd, PersonLeavesForGoodAborts) {
 
 TEST(RunEndToEnd, PersonComesBackRetryThenSuccess) {
   ScratchDir dir("run_retry");
-  const Run run = runShipped(dir, "h2r_retry");
+  const RunResult run = runShipped(dir, "h2r_retry");
   const app::RunSummary& s = run.summary;
   EXPECT_EQ(s.outcome, "success") << joined(s.states);
   EXPECT_EQ(s.retries, 1);
