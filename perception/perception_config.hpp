@@ -10,7 +10,8 @@ namespace handover::perception {
 
 struct PerceptionConfig {
   double max_age = 0.1;          ///< s, older samples are stale
-  double smoothing_time = 0.03;  ///< s, estimator smoothing time constant (0 = none)
+  double smoothing_time = 0.03;  ///< s, estimator smoothing time constant for positions (0 = none)
+  double rotation_smoothing_time = 0.1;  ///< s, the same for rotations (0 = none)
   double blend_time = 0.5;       ///< s, observation-target switch blend
 };
 

@@ -17,11 +17,15 @@ bool PerceptionEstimator::addSample(const PoseSample& s) {
     ++rejected_;
     return false;
   }
-  if (have_ && settings_.smoothing_time > 0.0) {
-    const double a = 1.0 - std::exp(-(s.stamp - latest_.stamp) / settings_.smoothing_time);
-    const auto blend = [a](Pose& into, const Pose& sample) {
+  const double tau_rot = settings_.rotation_smoothing_time >= 0.0 ? settings_.rotation_smoothing_time
+                                                                     : settings_.smoothing_time;
+  if (have_ && (settings_.smoothing_time > 0.0 || tau_rot > 0.0)) {
+    const double dt = s.stamp - latest_.stamp;
+    const auto weight = [dt](double tau) { return tau > 0.0 ? 1.0 - std::exp(-dt / tau) : 1.0; };
+    const double a = weight(settings_.smoothing_time), b = weight(tau_rot);
+    const auto blend = [a, b](Pose& into, const Pose& sample) {
       into.position += a * (sample.position - into.position);
-      into.orientation = into.orientation.slerp(a, sample.orientation).normalized();
+      into.orientation = into.orientation.slerp(b, sample.orientation).normalized();
     };
     blend(latest_.hand, s.hand);
     blend(latest_.forearm, s.forearm);

@@ -22,6 +22,11 @@ struct EstimatorSettings {
   /// is 1 - exp(-dt / smoothing_time), so after a dropout the estimate
   /// snaps back to the data instead of crawling.
   double smoothing_time = 0.0;
+  /// s, the same for rotations (negative: use smoothing_time). Rotational
+  /// noise matters more: through the lever from the object to the grasp
+  /// frame it becomes position noise, and the centripetal term w x (w x r)
+  /// of the grasp acceleration turns its variance into a steady pull.
+  double rotation_smoothing_time = -1.0;
   /// Object pose in the person's hand frame while the person holds it.
   Eigen::Isometry3d hand_T_object = Eigen::Isometry3d::Identity();
 };

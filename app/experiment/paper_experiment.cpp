@@ -113,6 +113,7 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
   perception::EstimatorSettings est_settings;
   est_settings.max_age = pcfg.max_age;
   est_settings.smoothing_time = pcfg.smoothing_time;
+  est_settings.rotation_smoothing_time = pcfg.rotation_smoothing_time;
   est_settings.hand_T_object = *sc.human.holds_object;
   perception::PerceptionEstimator estimator(est_settings);
 

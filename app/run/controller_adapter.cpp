@@ -67,6 +67,10 @@ void ControllerAdapter::clearTrackingStiffness() {
   controller_.trackingTask().setGains(t.translation.gains, t.orientation.gains);
 }
 
+void ControllerAdapter::relaxHandClearance(bool relaxed) {
+  if (collision_ && hand_rule_ >= 0) collision_->setRuleEnabled(hand_rule_, !relaxed);
+}
+
 void ControllerAdapter::setGripper(double width, double force) {
   gripper_width_ = std::clamp(width, 0.0, 0.08);
   gripper_force_ = std::max(force, 0.0);

@@ -6,6 +6,7 @@
 // Frames: world; TCP offsets in the observed object's frame; SI units.
 #pragma once
 
+#include "control/constraints/collision_constraint.hpp"
 #include "control/controller.hpp"
 #include "fsm/handover/controller_interface.hpp"
 #include "perception/observation_target.hpp"
@@ -32,6 +33,13 @@ class ControllerAdapter : public fsm::ControllerInterface {
   void setSpeedScale(double scale) override;
   void setTrackingStiffness(double translation, double orientation) override;
   void clearTrackingStiffness() override;
+  void relaxHandClearance(bool relaxed) override;
+  /// The collision constraint whose `hand_rule` (a pair-rule index) the
+  /// state machine relaxes; none: relaxHandClearance does nothing.
+  void setCollision(control::CollisionConstraint* collision, int hand_rule) {
+    collision_ = collision;
+    hand_rule_ = hand_rule;
+  }
   void setGripper(double width, double force) override;
   void setPayload(double mass, const fsm::Vector3& com_in_tcp) override;
   void clearPayload() override;
@@ -58,6 +66,8 @@ class ControllerAdapter : public fsm::ControllerInterface {
   double gripper_width_;
   double gripper_force_ = 40.0;
   double speed_scale_ = 1.0;
+  control::CollisionConstraint* collision_ = nullptr;
+  int hand_rule_ = -1;
 };
 
 }  // namespace handover::app

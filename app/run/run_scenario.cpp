@@ -117,6 +117,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   perception::EstimatorSettings est_settings;
   est_settings.max_age = pcfg.max_age;
   est_settings.smoothing_time = pcfg.smoothing_time;
+  est_settings.rotation_smoothing_time = pcfg.rotation_smoothing_time;
   est_settings.hand_T_object = sc.human.holds_object.value_or(Eigen::Isometry3d::Identity());
   perception::PerceptionEstimator estimator(est_settings);
   perception::ObservationTargetSettings target_settings;
@@ -125,6 +126,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
 
   const control::GraspOffset grasp = graspOffsetFor(sc.object);
   ControllerAdapter adapter(controller, obs_target, grasp, 0.08);
+  adapter.setCollision(collision.get(), gripper_rule);
   fsm::ObjectInfo object_info;
   object_info.mass = sc.object.mass;
   object_info.grasp_in_object = sc.object.grasp;

@@ -124,6 +124,8 @@ CollisionConfig parse(const YamlReader& root) {
   if (auto c = root.optionalChild("broadphase_margin")) cfg.broadphase_margin = c->checkRange(c->asDouble(), 0.0, 1.0);
   if (auto c = root.optionalChild("max_escape_acceleration"))
     cfg.max_escape_acceleration = c->checkRange(c->asDouble(), 0.1, 1000.0);
+  if (auto c = root.optionalChild("escape_reach_fraction"))
+    cfg.escape_reach_fraction = c->checkRange(c->asDouble(), 0.01, 1000.0);
   if (auto c = root.optionalChild("defaults")) {
     cfg.defaults = readDamper(*c, cfg.defaults);
     c->finish();

@@ -58,11 +58,14 @@ struct PersonSettings {
 struct CollisionConfig {
   std::string file;                 ///< where it was read from (messages)
   double broadphase_margin = 0.05;  ///< m, pairs farther than iDist + this are skipped
-  /// m/s^2, most acceleration away from a body a damper row may demand: a
-  /// person moving in faster than the robot can give way would otherwise make
-  /// the QP infeasible (the robot then yields at this rate, and the state
-  /// machine's safety stop takes over)
+  /// m/s^2, most acceleration away from a body a damper row may demand (and
+  /// never more than half of what the row's Jacobian can reach at the joint
+  /// acceleration limits): a person moving in faster than the robot can give
+  /// way would otherwise make the QP infeasible (the robot then yields at
+  /// this rate, and the state machine's safety stop takes over)
   double max_escape_acceleration = 8.0;
+  /// fraction of a row's reach (|Jd| . a_max) it may demand (see above)
+  double escape_reach_fraction = 0.5;
   DamperSettings defaults;
   TableSettings table;
   PersonSettings person;

@@ -15,7 +15,8 @@ CollisionConstraint::CollisionConstraint(const Model& model, const CollisionConf
       cmodel_(buildCollisionModel(model, config)),
       cdata_(cmodel_),
       dampers_(cmodel_.pairs.size()),
-      max_escape_(config.max_escape_acceleration) {}
+      max_escape_(config.max_escape_acceleration),
+      reach_fraction_(config.escape_reach_fraction) {}
 
 void CollisionConstraint::setRuleEnabled(int rule, bool enabled) {
   control::setRuleEnabled(cdata_, rule, enabled);
@@ -57,9 +58,13 @@ int CollisionConstraint::compute(const ControlContext& ctx, Eigen::Ref<Eigen::Ma
     C.row(rows).setZero();
     C.row(rows).segment<kArmDofs>(VariableLayout::kQdd) = r.jacobian;
     // d_ddot = Jd qddot + drift >= demand, the demand capped at what the arm
-    // can give (keeps the QP feasible when the person moves in fast)
+    // can give (keeps the QP feasible when the person moves in fast): at most
+    // max_escape, and at most half of what this row alone could reach with
+    // every joint at its acceleration limit (a row through a near-singular
+    // direction or a point near the base cannot do much)
+    const double reach = r.jacobian.cwiseAbs().dot(ctx.model->a_max.transpose());
     const double demand = damperLowerBound(r.distance, r.d_dot, r.drift, st.xi, s, ctx.dt) + r.drift;
-    lb[rows] = std::min(demand, max_escape_) - r.drift;
+    lb[rows] = std::min(demand, std::min(max_escape_, reach_fraction_ * reach)) - r.drift;
     ub[rows] = inf;
     ++rows;
   }

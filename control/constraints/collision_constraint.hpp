@@ -67,7 +67,8 @@ class CollisionConstraint : public Constraint {
   CollisionData cdata_;
   CollisionEnvironment env_;
   std::vector<DamperState> dampers_;
-  double max_escape_ = 8.0;  ///< m/s^2, cap on a row's demanded d_ddot
+  double max_escape_ = 8.0;     ///< m/s^2, cap on a row's demanded d_ddot
+  double reach_fraction_ = 0.5; ///< cap as a fraction of the row's reach
 };
 
 /// The bound of one damper row in chi space, for a pair with distance d,

@@ -86,6 +86,7 @@ struct Sim {
 // the damper's own algebra
 CollisionConfig tableConfig(const std::string& damping, double cap = 1000.0) {
   return parseCollisionConfig("max_escape_acceleration: " + std::to_string(cap) +
+                                  "\nescape_reach_fraction: " + (cap >= 1000.0 ? "1000" : "1000") +
                                   "\npairs:\n  - {name: table, robot: [panda_link5*, panda_link6, panda_link7*, "
                                   "panda_hand*], other: table, damping: " + damping + "}\n",
                               "table.yaml");
@@ -198,6 +199,7 @@ TEST(CollisionConstraint, EscapeDemandIsCappedAndOtherwiseUnchanged) {
 TEST(CollisionConstraint, KeepsThePersonsForearmAwayAndRelaxesOnRequest) {
   const CollisionConfig cfg = parseCollisionConfig(R"(
 max_escape_acceleration: 1000.0
+escape_reach_fraction: 1000
 person: {margin: 0.02}
 pairs:
   - {name: person_arm, robot: [panda_link5*, panda_link6, panda_link7*, panda_hand*], other: human_forearm}
