@@ -23,7 +23,7 @@ namespace {
 using namespace handover;
 
 int runCommand(const std::string& file, std::string out_dir, const std::string& video, bool view, bool quiet,
-               int log_every_ms) {
+               int log_every_ms, const std::string& tracker) {
   const scenario::Scenario sc = scenario::parseScenario(file);
   if (out_dir.empty()) out_dir = "out/" + sc.name;
   app::RunOptions ro;
@@ -31,6 +31,7 @@ int runCommand(const std::string& file, std::string out_dir, const std::string& 
   ro.video_path = video;
   ro.view = view;
   ro.log_every_ms = log_every_ms;
+  ro.tracker = tracker;
   if (!quiet && isatty(STDERR_FILENO)) {
     ro.progress = [](double t, double duration) {
       std::fprintf(stderr, "\rsimulating %5.1f / %.1f s", t, duration);
@@ -41,8 +42,8 @@ int runCommand(const std::string& file, std::string out_dir, const std::string& 
   int plot_status = 0;
   if (log_every_ms > 0) plot_status = app::drawPlots(out_dir, quiet);
   std::cout << app::formatSummary(r);
-  std::cout << "files      " << out_dir << "/summary.json, log.csv" << (plot_status == 0 ? ", *.png" : "")
-            << (video.empty() ? "" : ", " + video) << "\n";
+  std::cout << "files      " << out_dir << "/summary.json" << (log_every_ms > 0 ? ", log.csv" : "")
+            << (log_every_ms > 0 && plot_status == 0 ? ", *.png" : "") << (video.empty() ? "" : ", " + video) << "\n";
   if (plot_status != 0) std::cerr << "handover: warning: plots not drawn (exit " << plot_status << ")\n";
   if (r.outcome == "error") return 2;
   return r.expectation_failures.empty() ? 0 : 1;
@@ -91,7 +92,7 @@ int main(int argc, char** argv) {
   cli.require_subcommand(1);
 
   // run
-  std::string run_file, run_out, run_video;
+  std::string run_file, run_out, run_video, run_tracker;
   bool run_view = false, run_quiet = false;
   int log_every = 5;
   CLI::App* run_cmd = cli.add_subcommand("run", "run one scenario in the simulator");
@@ -100,6 +101,9 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--video", run_video, "record an MP4 (headless)");
   run_cmd->add_flag("--view", run_view, "open the interactive viewer (needs a display)");
   run_cmd->add_flag("--quiet", run_quiet, "no progress, no plot messages");
+  run_cmd->add_option("--tracker", run_tracker,
+                      "person poses from csv:FILE (replay) or udp:PORT (live, paced to the wall clock) "
+                      "instead of the simulated sensor");
   run_cmd->add_option("--log-every", log_every, "log.csv row period in ms (0 = no log, no plots)")
       ->capture_default_str()
       ->check(CLI::Range(0, 1000));
@@ -143,7 +147,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (run_cmd->parsed()) return runCommand(run_file, run_out, run_video, run_view, run_quiet, log_every);
+    if (run_cmd->parsed()) return runCommand(run_file, run_out, run_video, run_view, run_quiet, log_every, run_tracker);
     if (batch_cmd->parsed()) {
       batch.progress = !batch_quiet;
       return batchCommand(batch, batch_quiet);

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <memory>
 #include <sstream>
+#include <thread>
 
 #include "app/report/outcome_judge.hpp"
 #include "app/run/controller_adapter.hpp"
@@ -23,7 +24,9 @@
 #include "control/model/algorithms.hpp"
 #include "fsm/handover/handover_fsm.hpp"
 #include "perception/observation_target.hpp"
+#include "perception/csv_pose_source.hpp"
 #include "perception/perception_config.hpp"
+#include "perception/udp_pose_source.hpp"
 #include "perception/perception_estimator.hpp"
 #include "perception/simulated_pose_sensor.hpp"
 #include "scenes/human/human_facts.hpp"
@@ -112,6 +115,26 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   sim.load(simOptionsFor(sc));
   human::ScriptedHuman person(sc);
   perception::SimulatedPoseSensor sensor(sc.sensor, static_cast<std::uint64_t>(sc.seed));
+  std::unique_ptr<perception::PoseSource> tracker;
+  bool paced = false;
+  if (!opt.tracker.empty()) {
+    const std::string& spec = opt.tracker;
+    if (spec.rfind("csv:", 0) == 0) {
+      tracker = std::make_unique<perception::CsvPoseSource>(spec.substr(4));
+    } else if (spec.rfind("udp:", 0) == 0) {
+      int port = 0;
+      try {
+        port = std::stoi(spec.substr(4));
+      } catch (const std::exception&) {
+        port = -1;
+      }
+      if (port <= 0 || port > 65535) throw InputError("--tracker " + spec + ": expected udp:PORT with 1 <= PORT <= 65535");
+      tracker = std::make_unique<perception::UdpPoseSource>(static_cast<std::uint16_t>(port));
+      paced = true;
+    } else {
+      throw InputError("--tracker " + spec + ": expected csv:FILE or udp:PORT");
+    }
+  }
   const perception::PerceptionConfig pcfg =
       perception::loadPerceptionConfig(perception::defaultPerceptionConfigPath());
   perception::EstimatorSettings est_settings;
@@ -169,6 +192,12 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   RunLog log;
   log.reserve(steps / std::max(1, opt.log_every_ms) + 2);
 
+  // output folders exist before anything is written into them
+  if (!opt.out_dir.empty()) std::filesystem::create_directories(opt.out_dir);
+  if (!opt.video_path.empty()) {
+    const std::filesystem::path parent = std::filesystem::path(opt.video_path).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+  }
 #ifdef HANDOVER_HAVE_RENDER
   std::unique_ptr<render::VideoRecorder> video;
   if (!opt.video_path.empty()) {
@@ -218,10 +247,23 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
     if (hout.holds_object != sim.objectWelded()) sim.setObjectWeld(hout.holds_object);
 
     // sensing and perception (estimates only)
-    sensor.observe(t, hout.poses);
-    estimator.update(t, sensor);
+    if (tracker) {
+      estimator.update(t, *tracker);
+    } else {
+      sensor.observe(t, hout.poses);
+      estimator.update(t, sensor);
+    }
     const sim::ArmState arm = sim.armState();
     const bool robot_holds = adapter.payloadSet();
+    if (tracker && estimator.estimate(t, perception::ObjectHolder::Person).human.valid) {
+      // the simulated person's body follows the tracked person (the script
+      // still decides when the hand holds or lets go)
+      const perception::HumanEstimate& h = estimator.estimate(t, perception::ObjectHolder::Person).human;
+      hout.poses.hand = h.hand;
+      hout.poses.forearm = h.forearm;
+      hout.poses.upper_arm = h.upper_arm;
+      sim.setHumanPoses(hout.poses);
+    }
     const perception::PerceptionEstimate& est =
         estimator.estimate(t, robot_holds ? perception::ObjectHolder::Robot : perception::ObjectHolder::Person,
                            controller.tcpPose(), tcp_T_object);
@@ -372,6 +414,11 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
 #endif
 
     sim.step();
+    if (paced) {
+      // a live tracker speaks in wall-clock time: do not outrun it
+      const auto due = wall0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(t + dt));
+      std::this_thread::sleep_until(due);
+    }
 
     if (opt.progress && t >= next_progress) {
       opt.progress(t, sc.duration);

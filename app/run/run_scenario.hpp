@@ -19,6 +19,12 @@ struct RunOptions {
   bool plots = true;        ///< draw the PNGs after the run (needs out_dir)
   int log_every_ms = 5;     ///< log.csv row period
   double linger = 0.5;      ///< s simulated after the state machine finished
+  /// Where the person's poses come from: "" = the scenario's simulated
+  /// sensor; "csv:FILE" = replay a recording (docs/perception.md format);
+  /// "udp:PORT" = a live tracker streaming datagrams to 127.0.0.1:PORT (the
+  /// run is then paced to the wall clock). With a tracker, the simulated
+  /// person's hand and arm follow the tracked poses.
+  std::string tracker;
   /// Called about every 0.1 s of simulated time with (sim time, duration).
   std::function<void(double, double)> progress;
 };

@@ -163,6 +163,17 @@ def cmd_expect(a):
             s = json.load(f)
         if s.get("expectation_failures"):
             unmet.append("%s (%s): %s" % (s.get("scenario"), s.get("outcome"), "; ".join(s["expectation_failures"])))
+    # whatever each file expects: no shipped scenario may touch the person,
+    # drop the object, break a limit or lose the QP (issue: state machine)
+    for path in sorted(glob.glob(os.path.join(a.out, "runs", "*", "summary.json"))):
+        with open(path) as f:
+            s = json.load(f)
+        name = s.get("scenario")
+        check(s.get("human_contacts") == 0, "%s: %s robot-person contacts" % (name, s.get("human_contacts")))
+        check(s.get("object_dropped") is False, "%s: the object was dropped" % name)
+        check(s.get("qp_failures") == 0, "%s: %s QP failures" % (name, s.get("qp_failures")))
+        lim = s.get("limit_violations", {})
+        check(all(lim.get(k) == 0 for k in ("position", "velocity", "torque")), "%s: limit violations %s" % (name, lim))
     for u in unmet:
         print("unmet: " + u, file=sys.stderr)
     check(code == 0, "the batch exited %d: %d scenario(s) missed their expectations" % (code, len(unmet)))
