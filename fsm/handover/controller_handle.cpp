@@ -49,6 +49,10 @@ void CommandLedger::apply(Channel c, const ScopedCommands& v) {
       if (v.gains_active) ctl.setTrackingStiffness(v.gains_translation, v.gains_orientation);
       else ctl.clearTrackingStiffness();
       break;
+    case Channel::kHandClearance:
+      current_.hand_clearance_relaxed = v.hand_clearance_relaxed;
+      ctl.relaxHandClearance(v.hand_clearance_relaxed);
+      break;
   }
 }
 
@@ -88,6 +92,7 @@ void copyChannel(Channel c, const ScopedCommands& from, ScopedCommands& to) {
       to.gains_translation = from.gains_translation;
       to.gains_orientation = from.gains_orientation;
       break;
+    case Channel::kHandClearance: to.hand_clearance_relaxed = from.hand_clearance_relaxed; break;
   }
 }
 }  // namespace
@@ -172,6 +177,12 @@ void ControllerHandle::clearTrackingStiffness() {
   ScopedCommands next = ledger_->current();
   next.gains_active = false;
   change(Channel::kGains, next);
+}
+
+void ControllerHandle::relaxHandClearance(bool relaxed) {
+  ScopedCommands next = ledger_->current();
+  next.hand_clearance_relaxed = relaxed;
+  change(Channel::kHandClearance, next);
 }
 
 }  // namespace handover::fsm

@@ -6,7 +6,7 @@
 // Nested states therefore restore their parent's settings.
 //
 // Scoped channels: observation target, tracking on/off, tracking offset, pose
-// target, posture target, speed scale, tracking gains. Persistent commands (gripper, payload)
+// target, posture target, speed scale, tracking gains, hand clearance. Persistent commands (gripper, payload)
 // pass straight through and are never undone: a state's end must not open
 // the hand on a held object.
 // Real-time: every method is RT safe (fixed-size storage).
@@ -31,9 +31,10 @@ struct ScopedCommands {
   bool gains_active = false;
   double gains_translation = 0.0;  ///< 1/s^2
   double gains_orientation = 0.0;  ///< 1/s^2
+  bool hand_clearance_relaxed = false;
 };
 
-enum class Channel : std::uint8_t { kObservation, kTracking, kTrackingOffset, kPose, kPosture, kSpeedScale, kGains };
+enum class Channel : std::uint8_t { kObservation, kTracking, kTrackingOffset, kPose, kPosture, kSpeedScale, kGains, kHandClearance };
 
 /// The controller as seen by all states, with the current scoped values.
 class CommandLedger {
@@ -72,6 +73,7 @@ class ControllerHandle {
   void setSpeedScale(double scale);
   void setTrackingStiffness(double translation, double orientation);
   void clearTrackingStiffness();
+  void relaxHandClearance(bool relaxed);
 
   void setGripper(double width, double force) { ledger_->setGripper(width, force); }
   void setPayload(double mass, const Vector3& com) { ledger_->setPayload(mass, com); }

@@ -53,6 +53,11 @@ class ControllerInterface {
     (void)orientation;
   }
   virtual void clearTrackingStiffness() {}
+  /// While the person's hand and the gripper share the object (closing on
+  /// it, waiting for the release, being pulled), the clearance kept between
+  /// the person's hand and the gripper is switched off; every other person
+  /// and self-collision clearance stays. Optional (default: ignored).
+  virtual void relaxHandClearance(bool relaxed) { (void)relaxed; }
 
   // --- physical commands (persistent: they outlive the state) -------------
   /// Total finger opening target (m, 0..0.08) and grasp force limit (N).

@@ -85,6 +85,7 @@ void Grasp::configure(const YamlReader& def) {
 }
 
 void Grasp::onStart(HandoverContext& ctx) {
+  ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   closing_ = false;
   trackTarget(ctx, ctrl(), false);
 }
@@ -123,6 +124,7 @@ void WaitForRelease::configure(const YamlReader& def) {
 }
 
 void WaitForRelease::onStart(HandoverContext& ctx) {
+  ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   since_ = -1.0;
   trackTarget(ctx, ctrl(), false);  // follow the object while the person still holds it
 }

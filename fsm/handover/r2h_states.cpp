@@ -84,6 +84,7 @@ void DetectPull::configure(const YamlReader& def) {
 }
 
 void DetectPull::onStart(HandoverContext& ctx) {
+  ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   since_ = -1.0;
   ctx.force_holding = ctx.force;  // removes the object's (and hand's) weight from the test
   ctrl().enableTracking(false);
@@ -106,6 +107,7 @@ Release::Release() : opened_(declareOutput("Opened")) {}
 void Release::configure(const YamlReader& def) { min_width_ = readRange(def, "min_width", 0.0, 0.08); }
 
 void Release::onStart(HandoverContext& ctx) {
+  ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
   ctrl().enableTracking(false);
   ctrl().setPoseTarget(ctx.in.tcp_pose);
@@ -126,6 +128,7 @@ void ConfirmGone::configure(const YamlReader& def) {
 }
 
 void ConfirmGone::onStart(HandoverContext& ctx) {
+  ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   since_ = -1.0;
   ctrl().enableTracking(false);
   ctrl().setPoseTarget(ctx.in.tcp_pose);
