@@ -17,6 +17,7 @@
 #include "app/run/world_setup.hpp"
 #include "config/input_error.hpp"
 #include "control/collision/collision_config.hpp"
+#include "control/collision/environment_from_sim.hpp"
 #include "control/collision/collision_distances.hpp"
 #include "control/collision/collision_model.hpp"
 #include "control/constraints/collision_constraint.hpp"
@@ -332,13 +333,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
     sim.applyCommand(cmd);
 
     // judge on ground truth
-    control::CollisionEnvironment truth_env;
-    truth_env.person_valid = true;
-    truth_env.hand = hout.poses.hand;
-    truth_env.forearm = hout.poses.forearm;
-    truth_env.upper_arm = hout.poses.upper_arm;
-    truth_env.forearm_length = hout.poses.forearm_length;
-    truth_env.upper_arm_length = hout.poses.upper_arm_length;
+    const control::CollisionEnvironment truth_env = control::environmentFromHuman(hout.poses);
     control::updateCollisions(truth_cm, truth_cd, controller.model(), controller.data(), truth_env);
     const bool fingers_on = contacts.left_finger_on_object && contacts.right_finger_on_object;
     const double d_human = personDistance(truth_cm, truth_cd, -1, fingers_on || contacts.left_finger_on_object ||
