@@ -49,10 +49,21 @@ using Clock = std::chrono::steady_clock;
 /// Which of the person's bodies a distance covers.
 enum class PersonPart { kAll, kHand, kArm };
 
+// The robot's gripper capsules (URDF link panda_hand and the fingers), and
+// among them the fingertip capsule ("hand_b", between the fingers: it is
+// where a held object sits). Named once here, from scenes/panda.urdf.
+bool isGripperCapsule(const control::CollisionBody& b) {
+  return b.link.rfind("panda_hand", 0) == 0 || b.link.find("finger") != std::string::npos;
+}
+bool isFingertipCapsule(const control::CollisionBody& b) {
+  return isGripperCapsule(b) && b.name.find("hand_b") != std::string::npos;
+}
+
 /// Smallest robot-person distance over the active pairs of `cdata` (margins
 /// added back: the true clearance), skipping pairs of rule `skip_rule` (-1:
-/// none) and, when `skip_fingertips`, robot capsules at the fingertips (they
-/// hold the shared object).
+/// none) and, when `skip_fingertips`, the fingertips (they hold the shared
+/// object). The arm part leaves out the gripper: near the person's wrist it
+/// is the handover itself, and its clearance is the collision constraint's job.
 double personDistance(const control::CollisionModel& cm, const control::CollisionData& cd, int skip_rule,
                       bool skip_fingertips, PersonPart part = PersonPart::kAll) {
   double d = INFINITY;
@@ -65,11 +76,8 @@ double personDistance(const control::CollisionModel& cm, const control::Collisio
     const bool is_hand = other.kind == control::CollisionBodyKind::kHumanHand;
     if ((part == PersonPart::kHand && !is_hand) || (part == PersonPart::kArm && is_hand)) continue;
     const control::CollisionBody& robot = cm.bodies[pair.robot_body];
-    if (skip_fingertips && robot.name.find("hand_b") != std::string::npos) continue;
-    // the gripper near the person's wrist is the handover itself; its
-    // clearance is the collision constraint's job, not the safety layer's
-    if (part == PersonPart::kArm && (robot.link.rfind("panda_hand", 0) == 0 || robot.link.find("finger") != std::string::npos))
-      continue;
+    if (skip_fingertips && isFingertipCapsule(robot)) continue;
+    if (part == PersonPart::kArm && isGripperCapsule(robot)) continue;
     d = std::min(d, res.distance + pair.margin);
   }
   return d;
@@ -256,18 +264,17 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
     }
     const sim::ArmState arm = sim.armState();
     const bool robot_holds = adapter.payloadSet();
-    if (tracker && estimator.estimate(t, perception::ObjectHolder::Person).human.valid) {
-      // the simulated person's body follows the tracked person (the script
-      // still decides when the hand holds or lets go)
-      const perception::HumanEstimate& h = estimator.estimate(t, perception::ObjectHolder::Person).human;
-      hout.poses.hand = h.hand;
-      hout.poses.forearm = h.forearm;
-      hout.poses.upper_arm = h.upper_arm;
-      sim.setHumanPoses(hout.poses);
-    }
     const perception::PerceptionEstimate& est =
         estimator.estimate(t, robot_holds ? perception::ObjectHolder::Robot : perception::ObjectHolder::Person,
                            controller.tcpPose(), tcp_T_object);
+    if (tracker && est.human.valid) {
+      // the simulated person's body follows the tracked person (the script
+      // still decides when the hand holds or lets go)
+      hout.poses.hand = est.human.hand;
+      hout.poses.forearm = est.human.forearm;
+      hout.poses.upper_arm = est.human.upper_arm;
+      sim.setHumanPoses(hout.poses);
+    }
     if (est.human.valid) hand_vel.update(est.human.stamp, est.human.hand);
     if (est.object.valid && !robot_holds) object_vel.update(est.human.stamp, est.object.pose);
 
@@ -335,9 +342,8 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
     // judge on ground truth
     const control::CollisionEnvironment truth_env = control::environmentFromHuman(hout.poses);
     control::updateCollisions(truth_cm, truth_cd, controller.model(), controller.data(), truth_env);
-    const bool fingers_on = contacts.left_finger_on_object && contacts.right_finger_on_object;
-    const double d_human = personDistance(truth_cm, truth_cd, -1, fingers_on || contacts.left_finger_on_object ||
-                                                                      contacts.right_finger_on_object);
+    const bool a_finger_on = contacts.left_finger_on_object || contacts.right_finger_on_object;
+    const double d_human = personDistance(truth_cm, truth_cd, -1, a_finger_on);
     StepFacts f;
     f.time = t;
     f.robot_human_contacts = contacts.robot_human;
