@@ -11,7 +11,9 @@
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
+#include "app/batch/batch_outputs.hpp"
 #include "app/batch/batch_runner.hpp"
+#include "app/generate/scenario_generator.hpp"
 #include "app/hold_posture.hpp"
 #include "app/plot_runner.hpp"
 #include "app/run/run_scenario.hpp"
@@ -65,7 +67,10 @@ int batchCommand(const app::BatchOptions& opt, bool quiet) {
   std::cout << entries.size() << " runs:";
   for (const auto& [o, n] : outcomes) std::cout << " " << o << " " << n;
   std::cout << "; " << failed << " with unmet expectations\n";
-  std::cout << "files      " << opt.out_dir << "/results.csv, summary.json\n";
+  const int plot_status = app::drawReportPlot(opt.out_dir, true);
+  std::cout << "files      " << opt.out_dir << "/results.csv, summary.json, report.md"
+            << (plot_status == 0 ? ", report.png" : "") << "\n";
+  if (plot_status != 0) std::cerr << "handover: warning: report.png not drawn (exit " << plot_status << ")\n";
   if (errors) return 2;
   return failed ? 1 : 0;
 }
@@ -83,6 +88,43 @@ int checkCommand(const std::vector<std::string>& files) {
     }
   }
   return bad ? 2 : 0;
+}
+
+// "K/N" with 1 <= K <= N
+bool parseShard(const std::string& text, int& k, int& n) {
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) return false;
+  try {
+    std::size_t used_k = 0, used_n = 0;
+    k = std::stoi(text.substr(0, slash), &used_k);
+    n = std::stoi(text.substr(slash + 1), &used_n);
+    if (used_k != slash || used_n != text.size() - slash - 1) return false;
+  } catch (const std::exception&) {
+    return false;
+  }
+  return n >= 1 && k >= 1 && k <= n;
+}
+
+int generateCommand(const app::GenerateOptions& opt) {
+  const std::vector<std::string> paths = app::generateScenarios(opt);
+  std::cout << paths.size() << " scenarios written to " << opt.out_dir << " (seed " << opt.seed << ")\n";
+  return 0;
+}
+
+int reportCommand(const std::string& dir) {
+  app::rewriteReport(dir);
+  const int plot_status = app::drawReportPlot(dir, true);
+  std::cout << "files      " << dir << "/report.md" << (plot_status == 0 ? ", report.png" : "") << "\n";
+  if (plot_status != 0) std::cerr << "handover: warning: report.png not drawn (exit " << plot_status << ")\n";
+  return 0;
+}
+
+int mergeCommand(const std::vector<std::string>& dirs, const std::string& out) {
+  app::mergeBatches(dirs, out);
+  const int plot_status = app::drawReportPlot(out, true);
+  std::cout << "merged " << dirs.size() << " shards\nfiles      " << out << "/results.csv, summary.json, report.md"
+            << (plot_status == 0 ? ", report.png" : "") << "\n";
+  return 0;
 }
 
 }  // namespace
@@ -119,6 +161,33 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 100000));
   batch_cmd->add_flag("--runs", batch.per_run_files, "also write each run's summary.json and log.csv");
   batch_cmd->add_flag("--quiet", batch_quiet, "no progress bar");
+  std::string batch_shard;
+  batch_cmd->add_option("--shard", batch_shard,
+                        "K/N: run only the K-th of N disjoint slices (run i belongs to slice i mod N + 1); "
+                        "combine the slices with `handover merge`");
+
+  // generate
+  app::GenerateOptions gen;
+  std::string gen_mode = "both";
+  CLI::App* gen_cmd = cli.add_subcommand("generate", "write benchmark scenarios drawn from docs/benchmark.md's distribution");
+  gen_cmd->add_option("--count", gen.count, "number of files")->required()->check(CLI::Range(1, 1000000));
+  gen_cmd->add_option("--seed", gen.seed, "benchmark seed (the same seed gives the same files)")->capture_default_str();
+  gen_cmd->add_option("--out", gen.out_dir, "output folder")->required();
+  gen_cmd->add_option("--mode", gen_mode, "take (human to robot), give (robot to human) or both")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"take", "give", "both"}));
+
+  // report
+  std::string report_dir;
+  CLI::App* report_cmd = cli.add_subcommand("report", "write report.md and report.png of a batch from DIR/results.csv");
+  report_cmd->add_option("dir", report_dir, "a batch's output folder")->required();
+
+  // merge
+  std::vector<std::string> merge_dirs;
+  std::string merge_out;
+  CLI::App* merge_cmd = cli.add_subcommand("merge", "combine the output folders of `batch --shard K/N` runs into one");
+  merge_cmd->add_option("dirs", merge_dirs, "the shards' output folders")->required();
+  merge_cmd->add_option("--out", merge_out, "output folder")->required();
 
   // check
   std::vector<std::string> check_files;
@@ -150,9 +219,19 @@ int main(int argc, char** argv) {
     if (run_cmd->parsed()) return runCommand(run_file, run_out, run_video, run_view, run_quiet, log_every, run_tracker);
     if (batch_cmd->parsed()) {
       batch.progress = !batch_quiet;
+      if (!batch_shard.empty() && !parseShard(batch_shard, batch.shard_index, batch.shard_count)) {
+        std::cerr << "handover: error: --shard '" << batch_shard << "': expected K/N with 1 <= K <= N (e.g. 2/8)\n";
+        return 2;
+      }
       return batchCommand(batch, batch_quiet);
     }
     if (check_cmd->parsed()) return checkCommand(check_files);
+    if (gen_cmd->parsed()) {
+      gen.mode = app::parseGenerateMode(gen_mode);
+      return generateCommand(gen);
+    }
+    if (report_cmd->parsed()) return reportCommand(report_dir);
+    if (merge_cmd->parsed()) return mergeCommand(merge_dirs, merge_out);
     if (plot_cmd->parsed()) {
       if (!std::filesystem::exists(plot_dir + "/log.csv")) {
         std::cerr << "handover: error: " << plot_dir << "/log.csv: no such file (run `handover run` first)\n";

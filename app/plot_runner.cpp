@@ -7,8 +7,12 @@
 
 namespace handover::app {
 
-int drawPlots(const std::string& dir, bool quiet) {
-  const std::string script = std::string(HANDOVER_SOURCE_DIR) + "/scripts/plot_run.py";
+int drawPlots(const std::string& dir, bool quiet) { return runPlotScript("plot_run.py", dir, quiet); }
+
+int drawReportPlot(const std::string& dir, bool quiet) { return runPlotScript("plot_report.py", dir, quiet); }
+
+int runPlotScript(const std::string& name, const std::string& dir, bool quiet) {
+  const std::string script = std::string(HANDOVER_SOURCE_DIR) + "/scripts/" + name;
   const char* python = access("/usr/bin/python3", X_OK) == 0 ? "/usr/bin/python3" : "python3";
   const pid_t pid = fork();
   if (pid < 0) return 127;

@@ -9,7 +9,7 @@ packages=(
   libmujoco-dev libqhull-dev libgl-dev libegl-dev libglfw3-dev
   libfcl-dev libccd-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3 python3-matplotlib python3-numpy ffmpeg xvfb
+  python3 python3-matplotlib python3-numpy ffmpeg xvfb parallel
   libegl-mesa0 libgl1-mesa-dri   # render: Mesa EGL (surfaceless platform) and its software GL driver
 )
 

@@ -10,6 +10,7 @@
 #include <mutex>
 #include <thread>
 
+#include "app/batch/batch_outputs.hpp"
 #include "app/batch/scenario_variation.hpp"
 #include "app/run/run_scenario.hpp"
 #include "config/input_error.hpp"
@@ -41,22 +42,28 @@ std::string safeName(std::string s) {
 
 std::vector<BatchEntry> runBatch(const BatchOptions& opt, std::ostream& out) {
   // parse everything first: bad input fails the batch before it starts
+  if (opt.shard_count < 1 || opt.shard_index < 1 || opt.shard_index > opt.shard_count) {
+    throw InputError("--shard " + std::to_string(opt.shard_index) + "/" + std::to_string(opt.shard_count) +
+                     ": K must be in 1..N");
+  }
   std::vector<Job> jobs;
+  int runs_total = 0;
+  auto add = [&](scenario::Scenario sc, const std::string& file, int variant) {
+    const int index = runs_total++;
+    if (index % opt.shard_count != opt.shard_index - 1) return;
+    Job j{std::move(sc), {}};
+    j.entry.scenario_file = file;
+    j.entry.variant = variant;
+    j.entry.index = index;
+    j.entry.seed = static_cast<unsigned long>(j.scenario.seed);
+    j.entry.category = scenario::categoryOf(j.scenario);
+    j.entry.expected_outcome = j.scenario.expect.outcome.value_or("");
+    jobs.push_back(std::move(j));
+  };
   for (const auto& file : opt.files) {
     const scenario::Scenario base = scenario::parseScenario(file);
-    if (opt.vary <= 0) {
-      Job j{base, {}};
-      j.entry.scenario_file = file;
-      j.entry.seed = static_cast<unsigned long>(base.seed);
-      jobs.push_back(std::move(j));
-    }
-    for (int k = 1; k <= opt.vary; ++k) {
-      Job j{makeVariant(base, k), {}};
-      j.entry.scenario_file = file;
-      j.entry.variant = k;
-      j.entry.seed = static_cast<unsigned long>(j.scenario.seed);
-      jobs.push_back(std::move(j));
-    }
+    if (opt.vary <= 0) add(base, file, 0);
+    for (int k = 1; k <= opt.vary; ++k) add(makeVariant(base, k), file, k);
   }
 
   std::filesystem::create_directories(opt.out_dir);
@@ -111,6 +118,7 @@ std::vector<BatchEntry> runBatch(const BatchOptions& opt, std::ostream& out) {
         job.entry.summary.outcome = "error";
         job.entry.summary.error_message = e.what();
       }
+      job.entry.expectation_met = job.entry.summary.expectation_failures.empty();
       if (job.entry.summary.success()) ++succeeded;
       ++finished;
       std::lock_guard<std::mutex> lock(print_mutex);
@@ -131,12 +139,7 @@ std::vector<BatchEntry> runBatch(const BatchOptions& opt, std::ostream& out) {
   entries.reserve(jobs.size());
   for (auto& j : jobs) entries.push_back(std::move(j.entry));
 
-  const std::string csv_path = opt.out_dir + "/results.csv";
-  std::ofstream csv(csv_path);
-  if (!csv) throw std::runtime_error(csv_path + ": cannot write");
-  csv << resultsCsvHeader() << "\n";
-  for (const auto& e : entries) csv << resultsCsvRow(e) << "\n";
-  std::ofstream(opt.out_dir + "/summary.json") << batchSummaryJson(entries);
+  writeBatchOutputs(opt.out_dir, entries, {opt.shard_index, opt.shard_count, runs_total});
   return entries;
 }
 

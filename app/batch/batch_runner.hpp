@@ -17,11 +17,15 @@ struct BatchOptions {
   std::string out_dir = "out/batch";
   bool per_run_files = false;      ///< also write each run's summary.json and log.csv (no plots)
   bool progress = true;            ///< progress bar on stderr
+  int shard_index = 1;             ///< run only shard K (1-based) of shard_count disjoint slices
+  int shard_count = 1;             ///< 1 = the whole batch
 };
 
 /// Parses every file first (any bad file: InputError before anything runs),
-/// then runs them all; writes results.csv and summary.json into out_dir.
-/// Runs that fault are recorded with outcome "error" and their message.
+/// then runs them all (or the runs of one shard: run i of the whole list
+/// belongs to shard (i mod N) + 1); writes results.csv, summary.json and
+/// report.md into out_dir (writeBatchOutputs). Runs that fault are recorded
+/// with outcome "error" and their message.
 std::vector<BatchEntry> runBatch(const BatchOptions& options, std::ostream& progress_out);
 
 }  // namespace handover::app

@@ -93,6 +93,7 @@ struct Scenario {
   Mode mode = Mode::HumanToRobot;
   double duration = 10.0;  ///< s of simulated time at most
   int seed = 0;
+  std::string behaviour;    ///< benchmark category's behaviour variant (a word, "" = not given); see scenario_category.hpp
   std::string config_path;  ///< resolved controller config ("" if none given and no default exists)
   YAML::Node config;        ///< the controller config with `set:` applied (null if no config)
   YAML::Node overrides;     ///< the `set:` map as written (null if none)

@@ -279,6 +279,12 @@ Scenario readScenario(const YamlReader& root) {
   s.duration = positive(duration);
   if (s.duration > 600.0) duration.fail("longer than 600 s of simulated time");
   if (auto c = root.optionalChild("seed")) s.seed = nonNegativeInt(*c);
+  if (auto b = root.optionalChild("behaviour")) {
+    s.behaviour = b->asString();
+    const bool word = !s.behaviour.empty() && s.behaviour.size() <= 32 &&
+                      s.behaviour.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") == std::string::npos;
+    if (!word) b->fail("behaviour is one lowercase word (a-z, 0-9, _; at most 32), got '" + s.behaviour + "'");
+  }
 
   // controller config: given, else the default if it exists; `set:` needs one
   std::optional<YamlReader> cfg = root.optionalChild("config");

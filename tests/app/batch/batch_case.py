@@ -28,6 +28,8 @@ RESULT_COLUMNS = [
     "object_dropped", "limit_position", "limit_velocity", "limit_torque", "qp_failures", "grasp_error_pos",
     "grasp_error_rot_deg", "control_step_us_median", "control_step_us_p99", "control_step_us_max",
     "realtime_factor", "error",
+    "index", "direction", "grasp", "shape", "behaviour", "placement", "hand", "height", "category",
+    "expected_outcome", "met",
 ]
 TIMING_COLUMNS = {"control_step_us_median", "control_step_us_p99", "control_step_us_max", "realtime_factor"}
 OUTCOMES = ["success", "aborted", "hand_contact", "object_drop", "timeout", "unsafe", "error"]
@@ -88,7 +90,7 @@ def cmd_run(a):
         f.write(r.stdout + r.stderr)
     # this case only says the batch ran; `expect` judges the exit code
     check(r.returncode in (0, 1), "exit code %d (0 or 1 means the batch ran)" % r.returncode)
-    for f in ("results.csv", "summary.json"):
+    for f in ("results.csv", "summary.json", "report.md"):
         check(os.path.isfile(os.path.join(a.out, f)), "no %s written" % f)
     finish()
 
@@ -110,6 +112,10 @@ def cmd_format(a):
         check(r[col["mode"]] in ("human_to_robot", "robot_to_human"), "%s: mode %s" % (name, r[col["mode"]]))
         check(r[col["outcome"]] in OUTCOMES, "%s: outcome %s" % (name, r[col["outcome"]]))
         check(r[col["success"]] == ("1" if r[col["outcome"]] == "success" else "0"), "%s: success flag" % name)
+        check(r[col["direction"]] == ("take" if r[col["mode"]] == "human_to_robot" else "give"),
+              "%s: direction %s" % (name, r[col["direction"]]))
+        check(r[col["category"]] == "/".join(r[col[k]] for k in ("direction", "grasp", "shape", "behaviour")),
+              "%s: category %s" % (name, r[col["category"]]))
 
     with open(os.path.join(a.out, "summary.json")) as f:
         s = json.load(f)
