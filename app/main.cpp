@@ -3,6 +3,7 @@
 // a fault before the run could start.
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <iostream>
 #include <string>
@@ -16,6 +17,7 @@
 #include "app/generate/scenario_generator.hpp"
 #include "app/hold_posture.hpp"
 #include "app/plot_runner.hpp"
+#include "app/report/benchmark_report.hpp"
 #include "app/run/run_scenario.hpp"
 #include "config/input_error.hpp"
 #include "scenes/scenario/scenario_parser.hpp"
@@ -119,6 +121,19 @@ int reportCommand(const std::string& dir) {
   return 0;
 }
 
+int compareCommand(const std::string& before, const std::string& after, const std::string& out) {
+  const std::string md = app::benchmarkComparisonMarkdown(app::readBatchResults(before), app::readBatchResults(after),
+                                                          before, after);
+  std::cout << md;
+  if (!out.empty()) {
+    std::ofstream f(out);
+    f << md;
+    f.close();
+    if (!f) throw std::runtime_error(out + ": cannot write");
+  }
+  return 0;
+}
+
 int mergeCommand(const std::vector<std::string>& dirs, const std::string& out) {
   app::mergeBatches(dirs, out);
   const int plot_status = app::drawReportPlot(out, true);
@@ -182,6 +197,13 @@ int main(int argc, char** argv) {
   CLI::App* report_cmd = cli.add_subcommand("report", "write report.md and report.png of a batch from DIR/results.csv");
   report_cmd->add_option("dir", report_dir, "a batch's output folder")->required();
 
+  // compare
+  std::string compare_before, compare_after, compare_out;
+  CLI::App* compare_cmd = cli.add_subcommand("compare", "ok % per category of two batches, before and after a change");
+  compare_cmd->add_option("before", compare_before, "a batch's output folder (the reference)")->required();
+  compare_cmd->add_option("after", compare_after, "a batch's output folder (the change)")->required();
+  compare_cmd->add_option("--out", compare_out, "also write the table to this file (markdown)");
+
   // merge
   std::vector<std::string> merge_dirs;
   std::string merge_out;
@@ -232,6 +254,7 @@ int main(int argc, char** argv) {
     }
     if (report_cmd->parsed()) return reportCommand(report_dir);
     if (merge_cmd->parsed()) return mergeCommand(merge_dirs, merge_out);
+    if (compare_cmd->parsed()) return compareCommand(compare_before, compare_after, compare_out);
     if (plot_cmd->parsed()) {
       if (!std::filesystem::exists(plot_dir + "/log.csv")) {
         std::cerr << "handover: error: " << plot_dir << "/log.csv: no such file (run `handover run` first)\n";

@@ -140,4 +140,57 @@ std::string benchmarkReportMarkdown(const std::vector<BatchEntry>& entries, cons
   return md.str();
 }
 
+namespace {
+
+std::string comparisonTable(const std::string& heading, const std::vector<BatchEntry>& before,
+                            const std::vector<BatchEntry>& after, const Key& key, double worse_points) {
+  const auto b = groupBy(before, key), a = groupBy(after, key);
+  std::map<std::string, int> names;
+  for (const auto& [n, _] : b) names[n] = 0;
+  for (const auto& [n, _] : a) names[n] = 0;
+  std::ostringstream os;
+  os << "## " << heading << "\n\n"
+     << "| group | runs before | ok % before | runs after | ok % after | change (points) | hand still to grasp "
+        "s, median before / after |\n|---|---:|---:|---:|---:|---:|---:|\n";
+  for (const auto& [name, _] : names) {
+    const auto ib = b.find(name), ia = a.find(name);
+    const GroupStats gb = ib != b.end() ? groupStats(name, ib->second) : GroupStats{};
+    const GroupStats ga = ia != a.end() ? groupStats(name, ia->second) : GroupStats{};
+    const bool both = ib != b.end() && ia != a.end();
+    const double change = 100.0 * (ga.met_rate - gb.met_rate);
+    char delta[32] = "-";
+    if (both) std::snprintf(delta, sizeof delta, "%+.1f%s", change, change < -worse_points ? " **worse**" : "");
+    os << "| " << name << " | " << (ib != b.end() ? std::to_string(gb.runs) : "-") << " | "
+       << (ib != b.end() ? pct(gb.met_rate) : "-") << " | " << (ia != a.end() ? std::to_string(ga.runs) : "-") << " | "
+       << (ia != a.end() ? pct(ga.met_rate) : "-") << " | " << delta << " | "
+       << (ib != b.end() ? sec(gb.hand_still_median) : "-") << " / " << (ia != a.end() ? sec(ga.hand_still_median) : "-")
+       << " |\n";
+  }
+  return os.str() + "\n";
+}
+
+}  // namespace
+
+std::string benchmarkComparisonMarkdown(const std::vector<BatchEntry>& before, const std::vector<BatchEntry>& after,
+                                        const std::string& before_name, const std::string& after_name,
+                                        double worse_points) {
+  std::ostringstream md;
+  md << "# Benchmark comparison\n\nbefore: `" << before_name << "` (" << before.size() << " runs); after: `"
+     << after_name << "` (" << after.size() << " runs). **ok** = the run ended as its scenario expects. Rows whose "
+     << "ok % fell by more than " << worse_points << " points are marked **worse**: a change that helps one "
+     << "category and costs another is not a fix.\n\n";
+  const Key all = [](const BatchEntry&) { return std::string("all"); };
+  md << comparisonTable("Overall", before, after, all, worse_points);
+  md << comparisonTable("By direction", before, after, [](const BatchEntry& e) { return e.category.direction; }, worse_points);
+  md << comparisonTable("By grasp family", before, after, [](const BatchEntry& e) { return e.category.grasp; }, worse_points);
+  md << comparisonTable("By shape", before, after, [](const BatchEntry& e) { return e.category.shape; }, worse_points);
+  md << comparisonTable("By behaviour", before, after, [](const BatchEntry& e) { return e.category.behaviour; }, worse_points);
+  md << comparisonTable("By where the person stands", before, after,
+                        [](const BatchEntry& e) { return e.category.placement; }, worse_points);
+  md << comparisonTable("Direction x grasp family x shape", before, after, [](const BatchEntry& e) {
+    return e.category.direction + "/" + e.category.grasp + "/" + e.category.shape;
+  }, worse_points);
+  return md.str();
+}
+
 }  // namespace handover::app

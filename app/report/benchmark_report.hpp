@@ -35,4 +35,13 @@ double percentile(std::vector<double>& values, double q);
 /// violations and QP failures. Deterministic in the runs (no wall-clock data).
 std::string benchmarkReportMarkdown(const std::vector<BatchEntry>& entries, const std::string& title);
 
+/// compare.md: `before` against `after` (two batches, e.g. of the same
+/// generated files before and after a change): per factor and per direction x
+/// grasp x shape, runs and ok % of each, the change in points, and the
+/// median hand-still-to-grasp; rows whose ok % fell by more than `worse_points`
+/// are marked. Groups present in one batch only show "-" for the other.
+std::string benchmarkComparisonMarkdown(const std::vector<BatchEntry>& before, const std::vector<BatchEntry>& after,
+                                        const std::string& before_name, const std::string& after_name,
+                                        double worse_points = 2.0);
+
 }  // namespace handover::app

@@ -101,5 +101,21 @@ TEST(BenchmarkReport, TablesPerCategory) {
   EXPECT_NE(md.find("## By grasp family"), std::string::npos);
 }
 
+TEST(BenchmarkComparison, MarksCategoriesThatGotWorse) {
+  const std::vector<BatchEntry> before = {run(0, "take", "side", "success", 2.0, true),
+                                          run(1, "take", "side", "success", 2.0, true),
+                                          run(2, "give", "top", "timeout", std::nullopt, false)};
+  const std::vector<BatchEntry> after = {run(0, "take", "side", "success", 2.0, true),
+                                         run(1, "take", "side", "timeout", std::nullopt, false),
+                                         run(2, "give", "top", "success", 3.0, true)};
+  const std::string md = benchmarkComparisonMarkdown(before, after, "a", "b");
+  EXPECT_NE(md.find("| all | 3 | 66.7 | 3 | 66.7 | +0.0 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| take | 2 | 100.0 | 2 | 50.0 | -50.0 **worse** |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| give | 1 | 0.0 | 1 | 100.0 | +100.0 |"), std::string::npos) << md;
+  // a group only one batch has
+  const std::string only = benchmarkComparisonMarkdown(before, {run(0, "take", "around_axis", "success", 1.0, true)}, "a", "b");
+  EXPECT_NE(only.find("| around_axis | - | - | 1 | 100.0 | - |"), std::string::npos) << only;
+}
+
 }  // namespace
 }  // namespace handover::app
