@@ -26,8 +26,11 @@ void OutcomeJudge::observe(const StepFacts& f) {
 
   // drops: touching table/floor, or falling with nobody holding it
   const bool nobody_holds = !f.hand_holds_object && !robot_holds;
-  if (f.object_on_table || f.object_on_floor || (nobody_holds && f.object_vel.z() < -s_.fall_speed)) {
+  const bool fell = nobody_holds && f.object_vel.z() < -s_.fall_speed;
+  if (!dropped_ && (f.object_on_table || f.object_on_floor || fell)) {
     dropped_ = true;
+    drop_time_ = f.time;
+    drop_reason_ = f.object_on_table ? "table" : f.object_on_floor ? "floor" : "fell";
   }
 
   lim_.position += f.position_violation ? 1 : 0;
@@ -84,6 +87,10 @@ RunSummary OutcomeJudge::finish(bool fsm_done, const std::string& fsm_outcome, i
   r.min_human_distance = min_dist_ >= 1e8 ? std::nan("") : min_dist_;
   r.human_contacts = contacts_;
   r.object_dropped = dropped_;
+  if (dropped_) {
+    r.drop_time = drop_time_;
+    r.drop_reason = drop_reason_;
+  }
   r.limit_violations = lim_;
   r.qp_failures = qp_failures_;
   r.grasp_error_pos = grasp_pos_err_;

@@ -71,6 +71,8 @@ class OutcomeJudge {
   double transfer_since_ = -1.0;    // start of the current transfer-condition window
   bool transfer_now_ = false;
   bool dropped_ = false;
+  double drop_time_ = 0.0;       // s, when the drop was first seen
+  std::string drop_reason_;      // table | floor | fell
   int contacts_ = 0;
   bool in_contact_ = false;
   double min_dist_ = 1e9;

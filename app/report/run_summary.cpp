@@ -13,6 +13,8 @@ std::string RunSummary::toJson() const {
   w.value("time_to_grasp", time_to_grasp).value("hand_still_to_grasp", hand_still_to_grasp);
   w.value("total_time", total_time).value("min_human_distance", min_human_distance);
   w.value("human_contacts", human_contacts).value("object_dropped", object_dropped);
+  w.value("drop_time", drop_time);
+  w.value("drop_reason", drop_reason);  // "" when nothing dropped
   w.beginObject("limit_violations")
       .value("position", limit_violations.position)
       .value("velocity", limit_violations.velocity)

@@ -29,6 +29,8 @@ struct RunSummary {
   double min_human_distance = 0.0;            ///< m
   int human_contacts = 0;
   bool object_dropped = false;
+  std::optional<double> drop_time;            ///< s, when the drop was first seen (null if none)
+  std::string drop_reason;                    ///< table | floor | fell (nobody held it and it fell), "" if none
   LimitViolations limit_violations;
   int qp_failures = 0;
   std::optional<double> grasp_error_pos;      ///< m

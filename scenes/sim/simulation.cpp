@@ -324,7 +324,9 @@ void Simulation::placeObject(const Eigen::Isometry3d& pose, const Vector6& veloc
   if (!finite(pose) || !velocity.allFinite()) return;
   setObjectQpos(pose, velocity);
   if (m_->eq_active[weld_]) syncWeldReference();  // a placed object stays where it was put
-  mj_kinematics(m_, d_);
+  // forward, not only kinematics: the contact list must describe the object
+  // where it now is, not where it was (the scene starts it on the table)
+  mj_forward(m_, d_);
 }
 
 ContactReport Simulation::contacts() const {

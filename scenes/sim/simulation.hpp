@@ -84,8 +84,8 @@ class Simulation {
   /// back). Non-finite input is ignored. Real-time safe.
   void placeObject(const Eigen::Isometry3d& pose, const Vector6& velocity = Vector6::Zero());
 
-  /// Contacts found by the last step (or reset), i.e. at the state the last
-  /// step started from (at most one step old). Real-time safe.
+  /// Contacts found by the last step (or reset, or placeObject), i.e. at the
+  /// state the last step started from (at most one step old). Real-time safe.
   ContactReport contacts() const;
 
   /// Ground truth of the object. Real-time safe.

@@ -55,6 +55,21 @@ TEST(Contacts, RejectsNonFinitePosesAndLengths) {
   EXPECT_TRUE(sim.humanHandPose().matrix().allFinite());
 }
 
+// The scene starts the object resting on the table; a run places it in the
+// person's hand before the first step. The contacts read then must be those
+// of the object in the hand (a stale table contact judged every generated
+// handover a drop at t = 0).
+TEST(Contacts, PlacingTheObjectRefreshesItsContacts) {
+  Simulation sim;
+  sim.load();
+  sim.reset(test::readyPosture(), 0.08);
+  sim.placeObject(test::pose(0.45, 0.3, 0.02));  // on the table top
+  EXPECT_TRUE(sim.contacts().object_on_table);
+  sim.placeObject(test::pose(0.84, 0.10, 0.28));  // in the air, beyond the table
+  EXPECT_FALSE(sim.contacts().object_on_table);
+  EXPECT_FALSE(sim.contacts().object_on_floor);
+}
+
 TEST(Contacts, ObjectDroppedOnTheTableOrTheFloor) {
   Simulation sim;
   sim.load();
