@@ -92,6 +92,7 @@ void BM_Cycle(benchmark::State& state) {
     benchmark::DoNotOptimize(run->cycle->command());
   }
   state.counters["fallbacks"] = static_cast<double>(run->cycle->controller().fallbackCount());
+  state.SetLabel(run->cycle->machine().activePath());  // where the last run's state machine got to
 }
 BENCHMARK(BM_Cycle)->Unit(benchmark::kMicrosecond)->MinTime(2.0);
 
