@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "control/model/algorithms.hpp"
+#include "fsm/handover/handover_params.hpp"
 #include "perception/perception_config.hpp"
 #include "runtime/collision_queries.hpp"
 
@@ -19,6 +20,10 @@ CycleSettings defaultCycleSettings() {
   s.controller = control::loadControllerConfig(control::defaultControllerConfigPath());
   s.collision = control::loadCollisionConfig(control::defaultCollisionConfigPath());
   s.fsm_config_path = fsm::HandoverFsm::defaultConfigPath();
+  // the gripper's range and force: the state machine's parameters (one place)
+  const fsm::HandoverParams fp = fsm::loadHandoverParams(YamlReader::loadFile(s.fsm_config_path).child("params"));
+  s.gripper_open_width = fp.gripper_open_width;
+  s.gripper_force = fp.gripper_force;
   const perception::PerceptionConfig p = perception::loadPerceptionConfig(perception::defaultPerceptionConfigPath());
   s.estimator.max_age = p.max_age;
   s.estimator.smoothing_time = p.smoothing_time;

@@ -73,8 +73,8 @@ struct CycleSettings {
   perception::ObservationTargetSettings target;
   fsm::ObjectInfo object;                     ///< mass, grasp frame in the object, CoM in the TCP when held
   control::GraspOffset object_grasp;          ///< grasp frame in the object frame, with its symmetry
-  double gripper_open_width = 0.08;           ///< m
-  double gripper_force = 40.0;                ///< N, grasp force limit at start
+  double gripper_open_width = 0.08;           ///< m, widest opening (config/fsm.yaml params.gripper)
+  double gripper_force = 40.0;                ///< N, grasp force limit at start (params.gripper)
   double forearm_length = 0.27;               ///< m, the person's forearm capsule (collision)
   double upper_arm_length = 0.33;             ///< m, the person's upper-arm capsule (collision)
 };

@@ -96,9 +96,9 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   // -- initial state --------------------------------------------------------
   const control::Vector7 q0 = sc.robot.start_q.value_or(cs.controller.posture.target);
   const Eigen::Isometry3d tcp_T_object = sc.object.grasp.inverse();
-  const double hold_width = std::clamp(objectWidthAcrossFingers(sc.object), 0.0, 0.08);
+  const double hold_width = std::clamp(objectWidthAcrossFingers(sc.object), 0.0, cs.gripper_open_width);
   if (sc.robot.holds_object) sim.reset(q0, hold_width, tcp_T_object);
-  else sim.reset(q0, 0.08);
+  else sim.reset(q0, cs.gripper_open_width);
   {
     io::ArmState arm0;
     arm0.q = q0;

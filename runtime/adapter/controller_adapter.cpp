@@ -9,7 +9,7 @@ namespace handover::runtime {
 ControllerAdapter::ControllerAdapter(control::Controller& controller, perception::ObservationTarget& target,
                                      const control::GraspOffset& object_grasp, double open_width)
     : controller_(controller), target_(target), object_grasp_(object_grasp), placement_(object_grasp.placement),
-      gripper_width_(open_width) {}
+      open_width_(open_width), gripper_width_(open_width) {}
 
 void ControllerAdapter::setObservationTarget(fsm::ObservationTarget target) {
   target_kind_ = target;
@@ -66,7 +66,7 @@ void ControllerAdapter::relaxHandClearance(bool relaxed) {
 }
 
 void ControllerAdapter::setGripper(double width, double force) {
-  gripper_width_ = std::clamp(width, 0.0, 0.08);
+  gripper_width_ = std::clamp(width, 0.0, open_width_);
   gripper_force_ = std::max(force, 0.0);
 }
 

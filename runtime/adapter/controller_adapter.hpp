@@ -64,6 +64,7 @@ class ControllerAdapter : public fsm::ControllerInterface {
   double now_ = 0.0;
   bool tracking_on_ = false;
   bool payload_set_ = false;
+  double open_width_;  ///< m, the gripper's widest opening (commands are clamped to it)
   double gripper_width_;
   double gripper_force_ = 40.0;
   double speed_scale_ = 1.0;
