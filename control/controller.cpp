@@ -1,7 +1,6 @@
 #include "control/controller.hpp"
 
 #include <cmath>
-#include <cstdio>
 
 #include "control/qp/goldfarb_idnani.hpp"
 
@@ -149,9 +148,8 @@ void Controller::fallback(const char* why) {
   observation_->compute(ctx, obs_A_, obs_b_);
   integrator_.integrate(Vector6(obs_b_), config_.period);
 
-  if (fallback_streak_ == 1 || fallback_streak_ % 1000 == 0)
-    std::fprintf(stderr, "controller: t=%.3f s: QP %s%s%s; damped stop (fallback %ld)\n", time_, toString(status_),
-                 (why && why[0]) ? ": " : "", why ? why : "", fallback_count_);
+  // counted, not printed: the step stays free of I/O; the application logs
+  fallback_reason_ = why ? why : "";
 }
 
 void Controller::setObservationTarget(const Isometry& pose, bool valid) {

@@ -12,7 +12,8 @@
 // formulation(). If the QP fails (any status but optimal) or the inputs hold
 // NaN/inf, the controller falls back to a damped stop
 // qddot = -kd qdot clipped to the acceleration limits; fallbacks are counted
-// and logged (rate-limited) with the QP status.
+// with the QP status and the reason (fallbackStreak, lastFallbackReason), never
+// printed here: the application logs them (the step does no I/O).
 //
 // Frames: world (design notes 1); spatial vectors [linear; angular]; SI.
 // Real-time safety: step() and every set*/read-out method allocate nothing
@@ -90,6 +91,11 @@ class Controller {
   int lastIterations() const { return iterations_; }
   bool lastStepFellBack() const { return fell_back_; }
   long fallbackCount() const { return fallback_count_; }
+  /// Consecutive fallback steps up to the last one (0 after a solved step):
+  /// an application logs a fallback when this is 1 (and now and then after).
+  long fallbackStreak() const { return fallback_streak_; }
+  /// Why the last fallback happened ("" if no detail); static storage.
+  const char* lastFallbackReason() const { return fallback_reason_; }
   /// [e_p (m); e_o (rad, or axis error in free-axis mode)] of the tracking task.
   const Vector6& trackingError() const { return tracking_->error(); }
 
@@ -142,6 +148,7 @@ class Controller {
   bool fell_back_ = false;
   long fallback_count_ = 0;
   long fallback_streak_ = 0;
+  const char* fallback_reason_ = "";
 };
 
 }  // namespace handover::control

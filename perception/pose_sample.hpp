@@ -7,7 +7,7 @@
 #include <cmath>
 #include <Eigen/Geometry>
 
-#include "scenes/sim/sim_io.hpp"
+#include "interfaces/human_body_poses.hpp"
 
 namespace handover::perception {
 
@@ -44,7 +44,7 @@ struct PoseSample {
 };
 
 /// The three tracked bodies of a simulator pose set, as a sample at `stamp`.
-inline PoseSample sampleFromBodies(double stamp, const sim::HumanBodyPoses& b) {
+inline PoseSample sampleFromBodies(double stamp, const io::HumanBodyPoses& b) {
   PoseSample s;
   s.stamp = stamp;
   s.hand = Pose::fromIsometry(b.hand);

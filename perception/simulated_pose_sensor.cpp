@@ -32,7 +32,7 @@ Pose SimulatedPoseSensor::corrupt(const Eigen::Isometry3d& truth) {
   return p;
 }
 
-void SimulatedPoseSensor::observe(double t, const sim::HumanBodyPoses& truth) {
+void SimulatedPoseSensor::observe(double t, const io::HumanBodyPoses& truth) {
   // a small tolerance so that t = k * period computed in floating point counts
   if (t + 1e-9 < static_cast<double>(next_index_) * period_) return;
   // skip sample times missed by a coarse caller: one measurement per call

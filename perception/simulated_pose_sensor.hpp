@@ -24,7 +24,7 @@ class SimulatedPoseSensor : public PoseSource {
   SimulatedPoseSensor(const SensorSettings& settings, std::uint64_t seed);
 
   /// Feeds the true poses at simulated time t (s); call every simulation step.
-  void observe(double t, const sim::HumanBodyPoses& truth);
+  void observe(double t, const io::HumanBodyPoses& truth);
   bool poll(double now, PoseSample& out) override;
 
   const SensorSettings& settings() const { return settings_; }

@@ -38,6 +38,7 @@ target_us() {
     BM_ModelUpdate) echo 5 ;;
     BM_ControlStep) echo 40 ;;
     BM_ControlStepWithCollision) echo 40 ;;
+    BM_Cycle) echo 50 ;;
     BM_Distances) echo 15 ;;
     BM_StepWaiting|BM_StepGrasping) echo 10 ;;
     BM_ScriptedHumanStep|BM_SensorObservePoll|BM_EstimatorAndTarget) echo 5 ;;

@@ -17,6 +17,7 @@
 #include "perception/perception_config.hpp"
 #include "perception/perception_estimator.hpp"
 #include "perception/simulated_pose_sensor.hpp"
+#include "runtime/adapter/tracking_offset_rule.hpp"
 #include "scenes/human/human_facts.hpp"
 #include "scenes/human/scripted_human.hpp"
 #include "scenes/sim/simulation.hpp"
@@ -58,13 +59,10 @@ std::pair<double, double> handoverPhaseStiffness() {
 control::GraspOffset preGraspOffset(const scenario::ObjectSpec& object, double standoff) {
   if (!(standoff >= 0.0) || !std::isfinite(standoff))
     throw InputError("paper experiment: standoff must be a finite distance >= 0 m");
-  control::GraspOffset g = graspOffsetFor(object);  // placement and free axis
-  g.placement = g.placement * Eigen::Translation3d(0.0, 0.0, -standoff);
-  // as ControllerAdapter::applyOffset for the object with an empty gripper
-  g.approach_from_base = true;
-  g.base = control::Vector3::Zero();
-  g.parallel_gripper = true;
-  return g;
+  // the handover's own rule for an offset on the object (as the state machine's adapter applies it)
+  const control::GraspOffset object_grasp = graspOffsetFor(object);  // placement and free axis
+  return runtime::makeTrackingOffset(object_grasp.placement * Eigen::Translation3d(0.0, 0.0, -standoff), object_grasp,
+                                 true);
 }
 
 namespace {

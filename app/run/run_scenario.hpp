@@ -1,13 +1,16 @@
-// One scenario, end to end in the simulator: the app's loop reads the arm's
-// sensors, moves the scripted person, samples the pose sensor, updates
-// perception, steps the state machine, solves the QP and applies torques, in
-// that order, through plain structs (design notes 5).
+// One scenario, end to end in the simulator: each 1 ms the scripted person
+// moves, the pose sensor samples it, the control cycle
+// (runtime::HandoverCycle: perception, state machine, QP) turns the arm's
+// state into a command for the simulator, and the judge and the log watch
+// the ground truth (docs/architecture.md).
 #pragma once
 
 #include <functional>
 #include <string>
 
+#include "app/report/expectations.hpp"
 #include "app/report/run_summary.hpp"
+#include "app/report/summary_text.hpp"
 #include "scenes/scenario/scenario.hpp"
 
 namespace handover::app {
@@ -33,12 +36,5 @@ struct RunOptions {
 /// handover::InputError; faults during the run end it with outcome "error"
 /// and the message in the summary.
 RunSummary runScenario(const scenario::Scenario& scenario, const RunOptions& options);
-
-/// The `expect:` lines of the scenario that the summary does not meet, as
-/// readable sentences ("outcome: expected success, got timeout").
-std::vector<std::string> checkExpectations(const scenario::Scenario& scenario, const RunSummary& summary);
-
-/// A one-screen human-readable summary.
-std::string formatSummary(const RunSummary& summary);
 
 }  // namespace handover::app

@@ -12,48 +12,9 @@ const char* toString(ObservationTarget target) {
 }
 
 void CommandLedger::apply(Channel c, const ScopedCommands& v) {
-  ControllerInterface& ctl = controller_;
-  switch (c) {
-    case Channel::kObservation:
-      current_.observation = v.observation;
-      ctl.setObservationTarget(v.observation);
-      break;
-    case Channel::kTracking:
-      current_.tracking = v.tracking;
-      ctl.enableTracking(v.tracking);
-      break;
-    case Channel::kTrackingOffset:
-      current_.tracking_offset = v.tracking_offset;
-      ctl.setTrackingOffset(v.tracking_offset);
-      break;
-    case Channel::kPose:
-      current_.pose_active = v.pose_active;
-      current_.pose = v.pose;
-      if (v.pose_active) ctl.setPoseTarget(v.pose);
-      else ctl.clearPoseTarget();
-      break;
-    case Channel::kPosture:
-      current_.posture_active = v.posture_active;
-      current_.posture = v.posture;
-      if (v.posture_active) ctl.setPostureTarget(v.posture);
-      else ctl.clearPostureTarget();
-      break;
-    case Channel::kSpeedScale:
-      current_.speed_scale = v.speed_scale;
-      ctl.setSpeedScale(v.speed_scale);
-      break;
-    case Channel::kGains:
-      current_.gains_active = v.gains_active;
-      current_.gains_translation = v.gains_translation;
-      current_.gains_orientation = v.gains_orientation;
-      if (v.gains_active) ctl.setTrackingStiffness(v.gains_translation, v.gains_orientation);
-      else ctl.clearTrackingStiffness();
-      break;
-    case Channel::kHandClearance:
-      current_.hand_clearance_relaxed = v.hand_clearance_relaxed;
-      ctl.relaxHandClearance(v.hand_clearance_relaxed);
-      break;
-  }
+  const ChannelEntry& e = channelEntry(c);
+  e.copy(v, current_);
+  e.send(controller_, current_);
 }
 
 void CommandLedger::setGripper(double width, double force) {
@@ -71,37 +32,11 @@ void CommandLedger::clearPayload() {
   controller_.clearPayload();
 }
 
-namespace {
-// copies one channel's fields only, so earlier saves of other channels survive
-void copyChannel(Channel c, const ScopedCommands& from, ScopedCommands& to) {
-  switch (c) {
-    case Channel::kObservation: to.observation = from.observation; break;
-    case Channel::kTracking: to.tracking = from.tracking; break;
-    case Channel::kTrackingOffset: to.tracking_offset = from.tracking_offset; break;
-    case Channel::kPose:
-      to.pose_active = from.pose_active;
-      to.pose = from.pose;
-      break;
-    case Channel::kPosture:
-      to.posture_active = from.posture_active;
-      to.posture = from.posture;
-      break;
-    case Channel::kSpeedScale: to.speed_scale = from.speed_scale; break;
-    case Channel::kGains:
-      to.gains_active = from.gains_active;
-      to.gains_translation = from.gains_translation;
-      to.gains_orientation = from.gains_orientation;
-      break;
-    case Channel::kHandClearance: to.hand_clearance_relaxed = from.hand_clearance_relaxed; break;
-  }
-}
-}  // namespace
-
 void ControllerHandle::change(Channel c, const ScopedCommands& next) {
   const std::uint32_t bit = 1u << static_cast<int>(c);
   if (!(touched_ & bit)) {
     touched_ |= bit;
-    copyChannel(c, ledger_->current(), saved_);
+    channelEntry(c).copy(ledger_->current(), saved_);
   }
   ledger_->apply(c, next);
 }
@@ -126,27 +61,27 @@ void ControllerHandle::setTrackingOffset(const Isometry& offset) {
 
 void ControllerHandle::setPoseTarget(const Isometry& tcp) {
   ScopedCommands next = ledger_->current();
-  next.pose_active = true;
-  next.pose = tcp;
+  next.pose.active = true;
+  next.pose.pose = tcp;
   change(Channel::kPose, next);
 }
 
 void ControllerHandle::clearPoseTarget() {
   ScopedCommands next = ledger_->current();
-  next.pose_active = false;
+  next.pose.active = false;
   change(Channel::kPose, next);
 }
 
 void ControllerHandle::setPostureTarget(const Vector7& q) {
   ScopedCommands next = ledger_->current();
-  next.posture_active = true;
-  next.posture = q;
+  next.posture.active = true;
+  next.posture.q = q;
   change(Channel::kPosture, next);
 }
 
 void ControllerHandle::clearPostureTarget() {
   ScopedCommands next = ledger_->current();
-  next.posture_active = false;
+  next.posture.active = false;
   change(Channel::kPosture, next);
 }
 
@@ -158,8 +93,8 @@ void ControllerHandle::setSpeedScale(double scale) {
 
 void ControllerHandle::undo() {
   if (!ledger_) return;
-  // newest channels first is not needed: channels are independent
-  for (int c = 0; c <= static_cast<int>(Channel::kSpeedScale); ++c) {
+  // channels are independent: table order is as good as any
+  for (std::size_t c = 0; c < kNumChannels; ++c) {
     if (touched_ & (1u << c)) ledger_->apply(static_cast<Channel>(c), saved_);
   }
   touched_ = 0;
@@ -167,15 +102,15 @@ void ControllerHandle::undo() {
 
 void ControllerHandle::setTrackingStiffness(double translation, double orientation) {
   ScopedCommands next = ledger_->current();
-  next.gains_active = true;
-  next.gains_translation = translation;
-  next.gains_orientation = orientation;
+  next.gains.active = true;
+  next.gains.translation = translation;
+  next.gains.orientation = orientation;
   change(Channel::kGains, next);
 }
 
 void ControllerHandle::clearTrackingStiffness() {
   ScopedCommands next = ledger_->current();
-  next.gains_active = false;
+  next.gains.active = false;
   change(Channel::kGains, next);
 }
 

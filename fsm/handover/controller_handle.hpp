@@ -5,8 +5,8 @@
 // teardown, whatever ended the state) puts exactly the touched channels back.
 // Nested states therefore restore their parent's settings.
 //
-// Scoped channels: observation target, tracking on/off, tracking offset, pose
-// target, posture target, speed scale, tracking gains, hand clearance. Persistent commands (gripper, payload)
+// Scoped channels: the rows of channelTable() (scoped_commands.hpp); the
+// ledger and the handle loop over that table. Persistent commands (gripper, payload)
 // pass straight through and are never undone: a state's end must not open
 // the hand on a held object.
 // Real-time: every method is RT safe (fixed-size storage).
@@ -15,33 +15,16 @@
 #include <cstdint>
 
 #include "fsm/handover/controller_interface.hpp"
+#include "fsm/handover/scoped_commands.hpp"
 
 namespace handover::fsm {
-
-/// Values of the scoped channels.
-struct ScopedCommands {
-  ObservationTarget observation = ObservationTarget::kNone;
-  bool tracking = false;
-  Isometry tracking_offset = Isometry::Identity();
-  bool pose_active = false;
-  Isometry pose = Isometry::Identity();
-  bool posture_active = false;
-  Vector7 posture = Vector7::Zero();
-  double speed_scale = 1.0;
-  bool gains_active = false;
-  double gains_translation = 0.0;  ///< 1/s^2
-  double gains_orientation = 0.0;  ///< 1/s^2
-  bool hand_clearance_relaxed = false;
-};
-
-enum class Channel : std::uint8_t { kObservation, kTracking, kTrackingOffset, kPose, kPosture, kSpeedScale, kGains, kHandClearance };
 
 /// The controller as seen by all states, with the current scoped values.
 class CommandLedger {
  public:
   explicit CommandLedger(ControllerInterface& controller) : controller_(controller) {}
   const ScopedCommands& current() const { return current_; }
-  /// Writes `value`'s channel `c` to the controller and records it.
+  /// Writes `value`'s channel `c` (that member only) to the controller and records it.
   void apply(Channel c, const ScopedCommands& value);
   ControllerInterface& controller() { return controller_; }
   // persistent state, for queries (e.g. "is a payload set")
@@ -59,6 +42,8 @@ class CommandLedger {
 };
 
 class ControllerHandle {
+  static_assert(kNumChannels <= 32, "touched_ holds one bit per channel");
+
  public:
   void bind(CommandLedger* ledger) { ledger_ = ledger; }
   bool bound() const { return ledger_ != nullptr; }
@@ -79,7 +64,8 @@ class ControllerHandle {
   void setPayload(double mass, const Vector3& com) { ledger_->setPayload(mass, com); }
   void clearPayload() { ledger_->clearPayload(); }
 
-  /// Restores every channel this handle changed since the last undo().
+  /// Restores every channel this handle changed since the last undo(), in
+  /// table order.
   void undo();
   bool touched(Channel c) const { return (touched_ >> static_cast<int>(c)) & 1u; }
   const CommandLedger& ledger() const { return *ledger_; }

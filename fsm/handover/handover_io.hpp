@@ -27,7 +27,7 @@ struct HandoverInput {
   double finger_width = 0.0;                ///< total finger opening, m
 
   /// Wrist F/T sensor [force (N); torque (N m)] in the sensor frame, as
-  /// sim::ArmState::wrench reports it.
+  /// io::ArmState::wrench reports it.
   Vector6 wrench = Vector6::Zero();
   /// Rotation of the F/T sensor frame in the world (from the kinematics), so
   /// the force can be compared with gravity.

@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "interfaces/arm_driver.hpp"
 #include "scenes/sim/sim_io.hpp"
 #include "scenes/sim/sim_options.hpp"
 
@@ -26,10 +27,11 @@ struct mjData_;
 
 namespace handover::sim {
 
-class Simulation {
+/// The simulated world; as an io::ArmDriver it is the arm the control cycle drives.
+class Simulation : public io::ArmDriver {
  public:
   Simulation();
-  ~Simulation();
+  ~Simulation() override;
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
@@ -66,6 +68,10 @@ class Simulation {
   /// 0..140 N, per finger; a non-finite value keeps the previous limit).
   /// Real-time safe.
   void applyCommand(const ArmCommand& command);
+
+  // io::ArmDriver: armState() and applyCommand(). Real-time safe.
+  ArmState state() const override { return armState(); }
+  void apply(const ArmCommand& command) override { applyCommand(command); }
 
   /// Moves the person's mocap bodies and resizes the forearm / upper-arm
   /// capsules to the given lengths (geom size, position and bounding radius

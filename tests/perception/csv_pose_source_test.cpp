@@ -22,7 +22,7 @@ std::vector<PoseSample> noisySamples() {
   std::vector<PoseSample> out;
   for (int k = 0; k <= 1000; ++k) {
     const double t = k * 0.001;
-    sim::HumanBodyPoses b;
+    io::HumanBodyPoses b;
     b.hand.translation() = Eigen::Vector3d(0.5 + 0.1 * t, 0.05, 0.3);
     b.hand.linear() = Eigen::AngleAxisd(t, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
     s.observe(t, b);

@@ -10,8 +10,8 @@ using namespace handover::perception;
 
 namespace {
 
-sim::HumanBodyPoses bodiesAt(const Eigen::Vector3d& hand, double yaw = 0.3) {
-  sim::HumanBodyPoses b;
+io::HumanBodyPoses bodiesAt(const Eigen::Vector3d& hand, double yaw = 0.3) {
+  io::HumanBodyPoses b;
   b.hand.translation() = hand;
   b.hand.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   b.forearm.translation() = hand + Eigen::Vector3d(0.25, 0, 0);
@@ -20,7 +20,7 @@ sim::HumanBodyPoses bodiesAt(const Eigen::Vector3d& hand, double yaw = 0.3) {
 }
 
 // runs the sensor at 1 kHz for `seconds` on a static pose; returns delivered samples
-std::vector<PoseSample> runStatic(SimulatedPoseSensor& s, double seconds, const sim::HumanBodyPoses& b) {
+std::vector<PoseSample> runStatic(SimulatedPoseSensor& s, double seconds, const io::HumanBodyPoses& b) {
   std::vector<PoseSample> out;
   const long n = std::lround(seconds * 1000);
   for (long k = 0; k <= n; ++k) {

@@ -25,6 +25,8 @@ struct RecordingController : ControllerInterface {
   Isometry pose = Isometry::Identity();
   bool posture_active = false;
   double speed = 1.0;
+  bool gains_active = false;     // values only (not in `calls`)
+  bool hand_relaxed = false;     // values only (not in `calls`)
   double gripper_width = 0.08;
   bool payload = false;
 
@@ -66,6 +68,9 @@ struct RecordingController : ControllerInterface {
     speed = s;
     if (record) calls.push_back("speed " + num(s));
   }
+  void setTrackingStiffness(double, double) override { gains_active = true; }
+  void clearTrackingStiffness() override { gains_active = false; }
+  void relaxHandClearance(bool relaxed) override { hand_relaxed = relaxed; }
   void setGripper(double w, double) override {
     gripper_width = w;
     if (record) calls.push_back("gripper " + num(w));

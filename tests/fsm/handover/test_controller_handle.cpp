@@ -51,7 +51,7 @@ TEST(ControllerHandle, SecondChangeKeepsFirstSavedValue) {
   h.setTrackingOffset(at(0.2));
   h.setPoseTarget(at(0.5));  // a second change of the same channel
   h.undo();
-  EXPECT_FALSE(ledger.current().pose_active);
+  EXPECT_FALSE(ledger.current().pose.active);
   EXPECT_TRUE(ledger.current().tracking_offset.isApprox(Isometry::Identity()));
 }
 
@@ -66,7 +66,7 @@ TEST(ControllerHandle, EveryStateLeavesNothingBehind) {
   rig.fsm->stop();
   EXPECT_FALSE(cur.tracking);
   EXPECT_EQ(cur.observation, ObservationTarget::kNone);
-  EXPECT_FALSE(cur.pose_active);
+  EXPECT_FALSE(cur.pose.active);
   EXPECT_TRUE(cur.tracking_offset.isApprox(Isometry::Identity()));
   EXPECT_DOUBLE_EQ(cur.speed_scale, 1.0);
   // the controller saw the same
@@ -91,7 +91,7 @@ TEST(ControllerHandle, PreemptedPathLeavesOnlyTheStopsChanges) {
   EXPECT_EQ(cur.observation, ObservationTarget::kNone);
   EXPECT_TRUE(cur.tracking_offset.isApprox(Isometry::Identity()));
   EXPECT_FALSE(cur.tracking);
-  EXPECT_TRUE(cur.pose_active);
+  EXPECT_TRUE(cur.pose.active);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // The state machine's view of the QP controller (fsm::ControllerInterface),
-// implemented over control::Controller and perception::ObservationTarget.
+// implemented over control::Controller and perception::ObservationTarget:
+// the one place where fsm/ meets control/ (its own library, handover_adapter).
 // Every call stores a set-point applied at the next control step; all calls
 // are real-time safe (no allocation, no exceptions).
 //
@@ -11,7 +12,7 @@
 #include "fsm/handover/controller_interface.hpp"
 #include "perception/observation_target.hpp"
 
-namespace handover::app {
+namespace handover::runtime {
 
 class ControllerAdapter : public fsm::ControllerInterface {
  public:
@@ -51,18 +52,19 @@ class ControllerAdapter : public fsm::ControllerInterface {
   bool trackingEnabled() const { return tracking_on_; }
   double speedScale() const { return speed_scale_; }
   /// The tracking target in the observed frame, as last set.
-  const fsm::Isometry& trackingOffset() const { return offset_.placement; }
+  const fsm::Isometry& trackingOffset() const { return placement_; }
 
  private:
   void applyOffset();
   control::Controller& controller_;
   perception::ObservationTarget& target_;
   control::GraspOffset object_grasp_;
-  control::GraspOffset offset_;
+  fsm::Isometry placement_;  ///< tracking target in the observed frame
   fsm::ObservationTarget target_kind_ = fsm::ObservationTarget::kNone;
   double now_ = 0.0;
   bool tracking_on_ = false;
   bool payload_set_ = false;
+  double open_width_;  ///< m, the gripper's widest opening (commands are clamped to it)
   double gripper_width_;
   double gripper_force_ = 40.0;
   double speed_scale_ = 1.0;
@@ -70,4 +72,4 @@ class ControllerAdapter : public fsm::ControllerInterface {
   int hand_rule_ = -1;
 };
 
-}  // namespace handover::app
+}  // namespace handover::runtime

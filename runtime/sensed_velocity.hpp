@@ -6,7 +6,7 @@
 
 #include <Eigen/Geometry>
 
-namespace handover::app {
+namespace handover::runtime {
 
 class SensedVelocity {
  public:
@@ -40,4 +40,4 @@ class SensedVelocity {
   Eigen::Matrix<double, 6, 1> v_ = Eigen::Matrix<double, 6, 1>::Zero();
 };
 
-}  // namespace handover::app
+}  // namespace handover::runtime

@@ -1,14 +1,14 @@
-// Converts the simulator's/perception's person poses (sim::HumanBodyPoses)
+// Converts the person's body poses (io::HumanBodyPoses: a tracker's or the simulator's)
 // into a CollisionEnvironment. Real-time safe. Velocities stay zero: the
 // poses carry none; a caller with estimates can fill them in afterwards.
 #pragma once
 
 #include "control/collision/collision_environment.hpp"
-#include "scenes/sim/sim_io.hpp"
+#include "interfaces/human_body_poses.hpp"
 
 namespace handover::control {
 
-inline CollisionEnvironment environmentFromHuman(const sim::HumanBodyPoses& person, bool valid = true) {
+inline CollisionEnvironment environmentFromHuman(const io::HumanBodyPoses& person, bool valid = true) {
   CollisionEnvironment env;
   env.person_valid = valid;
   env.hand = person.hand;

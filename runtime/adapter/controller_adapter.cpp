@@ -1,13 +1,15 @@
-#include "app/run/controller_adapter.hpp"
+#include "runtime/adapter/controller_adapter.hpp"
 
 #include <algorithm>
 
-namespace handover::app {
+#include "runtime/adapter/tracking_offset_rule.hpp"
+
+namespace handover::runtime {
 
 ControllerAdapter::ControllerAdapter(control::Controller& controller, perception::ObservationTarget& target,
                                      const control::GraspOffset& object_grasp, double open_width)
-    : controller_(controller), target_(target), object_grasp_(object_grasp), offset_(object_grasp),
-      gripper_width_(open_width) {}
+    : controller_(controller), target_(target), object_grasp_(object_grasp), placement_(object_grasp.placement),
+      open_width_(open_width), gripper_width_(open_width) {}
 
 void ControllerAdapter::setObservationTarget(fsm::ObservationTarget target) {
   target_kind_ = target;
@@ -23,21 +25,13 @@ void ControllerAdapter::enableTracking(bool on) {
 }
 
 void ControllerAdapter::setTrackingOffset(const fsm::Isometry& target_in_observed) {
-  offset_.placement = target_in_observed;
+  placement_ = target_in_observed;
   applyOffset();
 }
 
 void ControllerAdapter::applyOffset() {
-  // an offset in the object's frame (grasp or pre-grasp) keeps the object's
-  // symmetry; one in the hand's frame does not
-  offset_.has_free_axis = target_kind_ == fsm::ObservationTarget::kObject && object_grasp_.has_free_axis;
-  offset_.free_axis = object_grasp_.free_axis;
-  // a symmetric object is taken from the robot's side (the base is the world origin)
-  offset_.approach_from_base = true;
-  offset_.base = control::Vector3::Zero();
-  // an empty gripper may take the object with either finger on either side
-  offset_.parallel_gripper = target_kind_ == fsm::ObservationTarget::kObject;
-  controller_.setGraspOffset(offset_);
+  controller_.setGraspOffset(
+      makeTrackingOffset(placement_, object_grasp_, target_kind_ == fsm::ObservationTarget::kObject));
 }
 
 void ControllerAdapter::setPoseTarget(const fsm::Isometry& tcp_in_world) {
@@ -72,7 +66,7 @@ void ControllerAdapter::relaxHandClearance(bool relaxed) {
 }
 
 void ControllerAdapter::setGripper(double width, double force) {
-  gripper_width_ = std::clamp(width, 0.0, 0.08);
+  gripper_width_ = std::clamp(width, 0.0, open_width_);
   gripper_force_ = std::max(force, 0.0);
 }
 
@@ -89,4 +83,4 @@ void ControllerAdapter::clearPayload() {
   payload_set_ = false;
 }
 
-}  // namespace handover::app
+}  // namespace handover::runtime

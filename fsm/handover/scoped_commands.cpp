@@ -1,0 +1,94 @@
+#include "fsm/handover/scoped_commands.hpp"
+
+namespace handover::fsm {
+
+namespace {
+
+bool same(const Isometry& a, const Isometry& b) { return a.matrix() == b.matrix(); }
+template <class T>
+bool same(const T& a, const T& b) {
+  return a == b;
+}
+
+// copy and compare one member, given as a pointer to member
+template <auto Member>
+void copyMember(const ScopedCommands& from, ScopedCommands& to) {
+  to.*Member = from.*Member;
+}
+template <auto Member>
+bool equalMember(const ScopedCommands& a, const ScopedCommands& b) {
+  return same(a.*Member, b.*Member);
+}
+template <auto Member>
+constexpr ChannelEntry row(Channel c, const char* name, void (*send)(ControllerInterface&, const ScopedCommands&)) {
+  return ChannelEntry{c, name, &copyMember<Member>, &equalMember<Member>, send};
+}
+
+// what each channel's value means to the controller
+void sendObservation(ControllerInterface& ctl, const ScopedCommands& v) { ctl.setObservationTarget(v.observation); }
+void sendTracking(ControllerInterface& ctl, const ScopedCommands& v) { ctl.enableTracking(v.tracking); }
+void sendTrackingOffset(ControllerInterface& ctl, const ScopedCommands& v) { ctl.setTrackingOffset(v.tracking_offset); }
+void sendPose(ControllerInterface& ctl, const ScopedCommands& v) {
+  if (v.pose.active) ctl.setPoseTarget(v.pose.pose);
+  else ctl.clearPoseTarget();
+}
+void sendPosture(ControllerInterface& ctl, const ScopedCommands& v) {
+  if (v.posture.active) ctl.setPostureTarget(v.posture.q);
+  else ctl.clearPostureTarget();
+}
+void sendSpeedScale(ControllerInterface& ctl, const ScopedCommands& v) { ctl.setSpeedScale(v.speed_scale); }
+void sendGains(ControllerInterface& ctl, const ScopedCommands& v) {
+  if (v.gains.active) ctl.setTrackingStiffness(v.gains.translation, v.gains.orientation);
+  else ctl.clearTrackingStiffness();
+}
+void sendHandClearance(ControllerInterface& ctl, const ScopedCommands& v) {
+  ctl.relaxHandClearance(v.hand_clearance_relaxed);
+}
+
+using S = ScopedCommands;
+constexpr ChannelEntry kTable[] = {
+    row<&S::observation>(Channel::kObservation, "observation", &sendObservation),
+    row<&S::tracking>(Channel::kTracking, "tracking", &sendTracking),
+    row<&S::tracking_offset>(Channel::kTrackingOffset, "tracking_offset", &sendTrackingOffset),
+    row<&S::pose>(Channel::kPose, "pose", &sendPose),
+    row<&S::posture>(Channel::kPosture, "posture", &sendPosture),
+    row<&S::speed_scale>(Channel::kSpeedScale, "speed_scale", &sendSpeedScale),
+    row<&S::gains>(Channel::kGains, "gains", &sendGains),
+    row<&S::hand_clearance_relaxed>(Channel::kHandClearance, "hand_clearance", &sendHandClearance),
+};
+static_assert(sizeof(kTable) / sizeof(kTable[0]) == kNumChannels, "one row per channel");
+
+constexpr bool rowsInChannelOrder() {
+  for (std::size_t i = 0; i < kNumChannels; ++i)
+    if (static_cast<std::size_t>(kTable[i].channel) != i) return false;
+  return true;
+}
+static_assert(rowsInChannelOrder(), "row i is channel i");
+
+}  // namespace
+
+bool operator==(const PoseCommand& a, const PoseCommand& b) { return a.active == b.active && same(a.pose, b.pose); }
+bool operator==(const PostureCommand& a, const PostureCommand& b) { return a.active == b.active && a.q == b.q; }
+bool operator==(const GainsCommand& a, const GainsCommand& b) {
+  return a.active == b.active && a.translation == b.translation && a.orientation == b.orientation;
+}
+
+const ChannelEntry* channelTable() { return kTable; }
+
+bool operator==(const ScopedCommands& a, const ScopedCommands& b) {
+  for (const ChannelEntry& e : kTable)
+    if (!e.equal(a, b)) return false;
+  return true;
+}
+
+std::string channelDifferences(const ScopedCommands& a, const ScopedCommands& b) {
+  std::string out;
+  for (const ChannelEntry& e : kTable) {
+    if (e.equal(a, b)) continue;
+    if (!out.empty()) out += ", ";
+    out += e.name;
+  }
+  return out;
+}
+
+}  // namespace handover::fsm

@@ -1,0 +1,94 @@
+// The scoped controller channels, as one table: what a state may change and
+// must give back when it ends (ControllerHandle::undo). Each channel is one
+// value type with operator==, one member of ScopedCommands and one row of
+// channelTable(), which knows how to copy, compare and send that member. The
+// ledger, the handle and the tests loop over the table, so adding a channel
+// is a value, a member and a row; nothing else enumerates the channels.
+//
+// Frames and units as in controller_interface.hpp (world frame, SI units).
+// Real-time: everything here is RT safe (plain values, no allocation).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "fsm/handover/controller_interface.hpp"
+
+namespace handover::fsm {
+
+/// A set-point that is either active with a value or cleared (the
+/// controller's default then applies).
+struct PoseCommand {
+  bool active = false;
+  Isometry pose = Isometry::Identity();  ///< TCP in the world
+};
+struct PostureCommand {
+  bool active = false;
+  Vector7 q = Vector7::Zero();  ///< rad, the 7 arm joints in chain order
+};
+struct GainsCommand {
+  bool active = false;       ///< false: the configured tracking gains
+  double translation = 0.0;  ///< 1/s^2, critically damped
+  double orientation = 0.0;  ///< 1/s^2, critically damped
+};
+
+/// Exact comparisons (a restored value is the very value saved).
+bool operator==(const PoseCommand& a, const PoseCommand& b);
+bool operator==(const PostureCommand& a, const PostureCommand& b);
+bool operator==(const GainsCommand& a, const GainsCommand& b);
+inline bool operator!=(const PoseCommand& a, const PoseCommand& b) { return !(a == b); }
+inline bool operator!=(const PostureCommand& a, const PostureCommand& b) { return !(a == b); }
+inline bool operator!=(const GainsCommand& a, const GainsCommand& b) { return !(a == b); }
+
+/// Values of the scoped channels; default-constructed = the controller's
+/// state before any state ran.
+struct ScopedCommands {
+  ObservationTarget observation = ObservationTarget::kNone;
+  bool tracking = false;
+  Isometry tracking_offset = Isometry::Identity();  ///< target frame in the observed frame
+  PoseCommand pose;
+  PostureCommand posture;
+  double speed_scale = 1.0;  ///< 0..1
+  GainsCommand gains;
+  bool hand_clearance_relaxed = false;
+};
+
+/// Every channel compared through the table.
+bool operator==(const ScopedCommands& a, const ScopedCommands& b);
+inline bool operator!=(const ScopedCommands& a, const ScopedCommands& b) { return !(a == b); }
+
+/// Channel ids: the index of the channel's row in channelTable().
+enum class Channel : std::uint8_t {
+  kObservation,
+  kTracking,
+  kTrackingOffset,
+  kPose,
+  kPosture,
+  kSpeedScale,
+  kGains,
+  kHandClearance,
+  kCount
+};
+constexpr std::size_t kNumChannels = static_cast<std::size_t>(Channel::kCount);
+
+/// One row of the table.
+struct ChannelEntry {
+  Channel channel;
+  const char* name;  ///< for messages and tests
+  /// Copies this channel's member only (other channels' values survive).
+  void (*copy)(const ScopedCommands& from, ScopedCommands& to);
+  bool (*equal)(const ScopedCommands& a, const ScopedCommands& b);
+  /// Writes this channel's member of `value` to the controller.
+  void (*send)(ControllerInterface& controller, const ScopedCommands& value);
+};
+
+/// The table, kNumChannels rows in Channel order.
+const ChannelEntry* channelTable();
+inline const ChannelEntry& channelEntry(Channel c) { return channelTable()[static_cast<std::size_t>(c)]; }
+
+/// Names of the channels whose values differ ("" when equal); for test
+/// messages (allocates, not RT safe).
+std::string channelDifferences(const ScopedCommands& a, const ScopedCommands& b);
+
+}  // namespace handover::fsm

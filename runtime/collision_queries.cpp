@@ -1,0 +1,48 @@
+#include "runtime/collision_queries.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace handover::runtime {
+
+// The capsule names and links come from scenes/panda.urdf through
+// config/collision.yaml; the gripper is the hand link and the fingers.
+bool isGripperCapsule(const control::CollisionBody& b) {
+  return b.link.rfind("panda_hand", 0) == 0 || b.link.find("finger") != std::string::npos;
+}
+bool isFingertipCapsule(const control::CollisionBody& b) {
+  return isGripperCapsule(b) && b.name.find("hand_b") != std::string::npos;
+}
+
+double personDistance(const control::CollisionModel& cm, const control::CollisionData& cd, int skip_rule,
+                      bool skip_fingertips, PersonPart part) {
+  double d = INFINITY;
+  for (int i = 0; i < cm.numPairs(); ++i) {
+    const auto& pair = cm.pairs[i];
+    const auto& res = cd.results[i];
+    if (!res.active || pair.rule == skip_rule) continue;
+    const control::CollisionBody& other = cm.bodies[pair.other_body];
+    if (!other.isPerson()) continue;
+    const bool is_hand = other.kind == control::CollisionBodyKind::kHumanHand;
+    if ((part == PersonPart::kHand && !is_hand) || (part == PersonPart::kArm && is_hand)) continue;
+    const control::CollisionBody& robot = cm.bodies[pair.robot_body];
+    if (skip_fingertips && isFingertipCapsule(robot)) continue;
+    if (part == PersonPart::kArm && isGripperCapsule(robot)) continue;
+    d = std::min(d, res.distance + pair.margin);
+  }
+  return d;
+}
+
+void tableAndSelfDistance(const control::CollisionModel& cm, const control::CollisionData& cd, double& table,
+                          double& self) {
+  table = self = INFINITY;
+  for (int i = 0; i < cm.numPairs(); ++i) {
+    const auto& res = cd.results[i];
+    if (!res.active) continue;
+    const auto& other = cm.bodies[cm.pairs[i].other_body];
+    if (other.kind == control::CollisionBodyKind::kTable) table = std::min(table, res.distance);
+    if (other.isRobot()) self = std::min(self, res.distance);
+  }
+}
+
+}  // namespace handover::runtime

@@ -1,0 +1,38 @@
+// Distances read from a collision model's results: robot to the person (all
+// of it, the hand, the arm), robot to the table and robot to itself. Used
+// for the state machine's inputs (from the controller's own collision
+// constraint, perceived person) and by the judge (ground-truth person).
+// Which robot capsules form the gripper comes from their role in
+// config/collision.yaml (CollisionBody::link names the robot link).
+// m; real-time safe (reads only).
+#pragma once
+
+#include "control/collision/collision_distances.hpp"
+#include "control/collision/collision_model.hpp"
+
+namespace handover::runtime {
+
+/// Which of the person's bodies a distance covers.
+enum class PersonPart { kAll, kHand, kArm };
+
+/// The robot's gripper capsules (the hand link and the fingers), and among
+/// them the fingertip capsule ("hand_b", between the fingers: where a held
+/// object sits).
+bool isGripperCapsule(const control::CollisionBody& body);
+bool isFingertipCapsule(const control::CollisionBody& body);
+
+/// Smallest robot-person distance over the active pairs of `cd` (margins
+/// added back: the true clearance), skipping pairs of rule `skip_rule` (-1:
+/// none) and, when `skip_fingertips`, the fingertips (they hold the shared
+/// object). The arm part leaves out the gripper: near the person's wrist it
+/// is the handover itself, and its clearance is the collision constraint's
+/// job. Infinity when no pair counts.
+double personDistance(const control::CollisionModel& cm, const control::CollisionData& cd, int skip_rule,
+                      bool skip_fingertips, PersonPart part = PersonPart::kAll);
+
+/// Smallest distance of the active pairs whose other body is the table
+/// (`table`) or a robot body (`self`); infinity when none.
+void tableAndSelfDistance(const control::CollisionModel& cm, const control::CollisionData& cd, double& table,
+                          double& self);
+
+}  // namespace handover::runtime

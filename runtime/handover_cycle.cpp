@@ -1,0 +1,148 @@
+#include "runtime/handover_cycle.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "control/model/algorithms.hpp"
+#include "fsm/handover/handover_params.hpp"
+#include "perception/perception_config.hpp"
+#include "runtime/collision_queries.hpp"
+
+namespace handover::runtime {
+
+namespace {
+double clip(double v) { return std::isfinite(v) ? std::min(v, 2.0) : 2.0; }
+}  // namespace
+
+CycleSettings defaultCycleSettings() {
+  CycleSettings s;
+  s.urdf_path = std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf";
+  s.controller = control::loadControllerConfig(control::defaultControllerConfigPath());
+  s.collision = control::loadCollisionConfig(control::defaultCollisionConfigPath());
+  s.fsm_config_path = fsm::HandoverFsm::defaultConfigPath();
+  // the gripper's range and force: the state machine's parameters (one place)
+  const fsm::HandoverParams fp = fsm::loadHandoverParams(YamlReader::loadFile(s.fsm_config_path).child("params"));
+  s.gripper_open_width = fp.gripper_open_width;
+  s.gripper_force = fp.gripper_force;
+  const perception::PerceptionConfig p = perception::loadPerceptionConfig(perception::defaultPerceptionConfigPath());
+  s.estimator.max_age = p.max_age;
+  s.estimator.smoothing_time = p.smoothing_time;
+  s.estimator.rotation_smoothing_time = p.rotation_smoothing_time;
+  s.target.blend_time = p.blend_time;
+  return s;
+}
+
+HandoverCycle::HandoverCycle(const CycleSettings& settings)
+    : settings_(settings),
+      controller_(control::loadModel(settings.urdf_path), settings.controller),
+      collision_(std::make_shared<control::CollisionConstraint>(controller_.model(), settings.collision)),
+      estimator_(settings.estimator),
+      obs_target_(settings.target),
+      adapter_(controller_, obs_target_, settings.object_grasp, settings.gripper_open_width),
+      tcp_T_object_(settings.object.grasp_in_object.inverse()) {
+  controller_.formulation().addConstraint(collision_);
+  hand_rule_ = collision_->collisionModel().ruleIndex("person_hand_gripper");
+  adapter_.setCollision(collision_.get(), hand_rule_);
+  ft_frame_ = controller_.model().frameId("ft_sensor");
+  machine_ = fsm::HandoverFsm::fromFile(settings.fsm_config_path, adapter_, settings.object);
+}
+
+void HandoverCycle::start(const io::ArmState& arm, bool holds_object) {
+  if (holds_object) {
+    adapter_.setGripper(0.0, settings_.gripper_force);
+    adapter_.setPayload(settings_.object.mass, settings_.object.com_in_tcp);
+  } else {
+    adapter_.setGripper(settings_.gripper_open_width, settings_.gripper_force);
+  }
+  control_in_.time = arm.time;
+  control_in_.q = arm.q;
+  control_in_.qd.setZero();
+  controller_.reset(control_in_);
+}
+
+const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, perception::PoseSource& source) {
+  // 1. perceive (who holds the object, and the TCP, as of the last cycle)
+  estimator_.update(t, source);
+  const bool robot_holds = adapter_.payloadSet();
+  const perception::PerceptionEstimate& est =
+      estimator_.estimate(t, robot_holds ? perception::ObjectHolder::Robot : perception::ObjectHolder::Person,
+                          controller_.tcpPose(), tcp_T_object_);
+  estimate_ = &est;
+
+  // 2. velocities from new samples
+  if (est.human.valid) hand_vel_.update(est.human.stamp, est.human.hand);
+  if (est.object.valid && !robot_holds) object_vel_.update(est.human.stamp, est.object.pose);
+
+  // 3-4. the state machine, on this cycle's sensing and the last cycle's controller state
+  adapter_.setTime(t);
+  assembleInput(t, arm, est);
+  machine_->step(input_);
+
+  // 5. observation target
+  const perception::TargetOutput& target = obs_target_.update(t, est);
+  controller_.setObservationTarget(target.pose,
+                                   target.valid && adapter_.observationTarget() != fsm::ObservationTarget::kNone);
+
+  // 6. collision environment: the perceived person
+  control::CollisionEnvironment env;
+  env.person_valid = est.human.valid && !est.human.stale;
+  env.hand = est.human.hand;
+  env.forearm = est.human.forearm;
+  env.upper_arm = est.human.upper_arm;
+  env.forearm_length = settings_.forearm_length;
+  env.upper_arm_length = settings_.upper_arm_length;
+  env.hand_velocity = hand_vel_.velocity();
+  collision_->setEnvironment(env);
+
+  // 7. the QP
+  control_in_.time = t;
+  control_in_.q = arm.q;
+  control_in_.qd = arm.qd;
+  command_.tau = controller_.step(control_in_);
+
+  // 8. the command
+  command_.gripper_width = adapter_.gripperWidth();
+  command_.gripper_force = adapter_.gripperForce();
+  return command_;
+}
+
+void HandoverCycle::assembleInput(double t, const io::ArmState& arm, const perception::PerceptionEstimate& est) {
+  const bool robot_holds = adapter_.payloadSet();
+  fsm::HandoverInput& in = input_;
+  in.time = t;
+  // this cycle's arm sensing
+  in.q = arm.q;
+  in.qd = arm.qd;
+  in.finger_width = arm.finger_width;
+  in.wrench = arm.wrench;
+  // the previous Controller::step's kinematics
+  in.tcp_pose = controller_.tcpPose();
+  in.tcp_velocity = controller_.tcpVelocity();
+  in.ft_rotation = control::framePlacement(controller_.model(), controller_.data(), ft_frame_).linear();
+  // this cycle's perception
+  in.hand.pose = est.human.hand;
+  in.hand.velocity = hand_vel_.velocity();
+  in.hand.valid = est.human.valid && !est.human.stale;
+  in.hand.age = est.human.valid ? est.human.age : 1e9;
+  in.object.pose = est.object.pose;
+  in.object.velocity = robot_holds ? controller_.tcpVelocity() : object_vel_.velocity();
+  in.object.valid = est.object.valid && !est.object.stale;
+  in.object.age = robot_holds ? 0.0 : in.hand.age;
+  in.hand_open = robot_holds;
+  // the previous Controller::step's collision distances (perceived person)
+  const control::CollisionModel& cm = collision_->collisionModel();
+  const control::CollisionData& cd = collision_->collisionData();
+  in.hand_distance = clip(personDistance(cm, cd, hand_rule_, false, PersonPart::kHand));
+  in.arm_distance = clip(personDistance(cm, cd, hand_rule_, false, PersonPart::kArm));
+  in.human_distance = std::min(in.hand_distance, in.arm_distance);
+  // the controller's observed object and tracking target, as commanded so far
+  in.observed_target = adapter_.observationTarget();
+  in.observed_pose = controller_.observedState().pose;
+  in.observed_velocity = controller_.observedState().velocity;
+  const control::GraspFrameState gf = controller_.graspFrame();
+  in.target_pose = gf.pose;
+  in.target_velocity = gf.velocity;
+  in.holds_object = robot_holds;
+}
+
+}  // namespace handover::runtime

@@ -1,0 +1,145 @@
+// One control cycle of the handover product (1 ms): the arm's state and the
+// person's pose samples in, one arm command out. Everything that turns
+// sensing into a command lives here, so the simulated run, a real-arm driver
+// loop, the benchmark and the tests all call the same function:
+//
+//   HandoverCycle cycle(settings);          // not RT safe: loads, allocates
+//   cycle.start(arm.state(), holds_object); // once, before the first step
+//   every 1 ms:
+//     driver.apply(cycle.step(t, driver.state(), pose_source));
+//   cycle.stop();                           // tears down the active states
+//
+// Stages of step(t, arm, source), in this order:
+//   1. perceive    drain `source` of the samples that arrived by t; the
+//                  estimate at t (hand, forearm, upper arm, object). Who holds
+//                  the object is the payload the state machine set in the
+//                  previous cycle; while the robot holds it, its pose is the
+//                  TCP pose of the previous Controller::step.
+//   2. velocities  finite-difference hand and object velocities on new samples.
+//   3. fsm input   assemble fsm::HandoverInput (table below).
+//   4. fsm         the state machine steps; through the adapter it changes
+//                  set-points (tasks, targets, gains, gripper, payload) that
+//                  take effect in stage 7 of this same cycle.
+//   5. target      the observation target from this cycle's estimate
+//                  (blending between object and hand as selected in stage 4).
+//   6. collision   the collision constraint's person capsules from this
+//                  cycle's estimate.
+//   7. QP          Controller::step(q, qd of `arm`): kinematics, tasks,
+//                  constraints, solve, torques; updates the TCP pose, the
+//                  observed object and the collision distances.
+//   8. command     torques from 7, gripper width and force from 4.
+//
+// Age of every input of the state machine (stage 3), relative to `arm`:
+//   this cycle          q, qd, finger width, wrist wrench (from `arm`);
+//                       the hand and object estimates (each sample itself is
+//                       `age` s old: sensor rate and latency);
+//   one cycle old       TCP pose and velocity, F/T sensor rotation, observed
+//                       object pose and velocity, tracking target frame,
+//                       robot-person distances: all computed by the previous
+//                       Controller::step at the previous q (before the first
+//                       step: from start()'s reset at the start state);
+//   as last commanded   observation target kind, object held (payload set).
+//
+// Frames: world (z up, robot base at the origin); SI units.
+// Real-time: step() allocates nothing and does no I/O (the controller's QP
+// fallback is counted, not printed: see control::Controller). Construction,
+// start() and stop() are not RT safe.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "control/collision/collision_config.hpp"
+#include "control/constraints/collision_constraint.hpp"
+#include "control/controller.hpp"
+#include "control/controller_config.hpp"
+#include "fsm/handover/handover_fsm.hpp"
+#include "interfaces/arm_io.hpp"
+#include "perception/observation_target.hpp"
+#include "perception/perception_estimator.hpp"
+#include "perception/pose_source.hpp"
+#include "runtime/adapter/controller_adapter.hpp"
+#include "runtime/sensed_velocity.hpp"
+
+namespace handover::runtime {
+
+/// Everything the cycle is built from (start-up only).
+struct CycleSettings {
+  std::string urdf_path;                      ///< the robot's model
+  control::ControllerConfig controller;       ///< tasks, constraints, gains (config/controller.yaml)
+  control::CollisionConfig collision;         ///< collision pairs (config/collision.yaml)
+  std::string fsm_config_path;                ///< the state machine (config/fsm.yaml)
+  perception::EstimatorSettings estimator;    ///< incl. the object's pose in the person's hand
+  perception::ObservationTargetSettings target;
+  fsm::ObjectInfo object;                     ///< mass, grasp frame in the object, CoM in the TCP when held
+  control::GraspOffset object_grasp;          ///< grasp frame in the object frame, with its symmetry
+  double gripper_open_width = 0.08;           ///< m, widest opening (config/fsm.yaml params.gripper)
+  double gripper_force = 40.0;                ///< N, grasp force limit at start (params.gripper)
+  double forearm_length = 0.27;               ///< m, the person's forearm capsule (collision)
+  double upper_arm_length = 0.33;             ///< m, the person's upper-arm capsule (collision)
+};
+
+/// CycleSettings from the repository's config files (config/*.yaml,
+/// scenes/panda.urdf); the object and person fields keep their defaults
+/// for the caller to fill. Throws handover::InputError.
+CycleSettings defaultCycleSettings();
+
+class HandoverCycle {
+ public:
+  /// Loads the model and the state machine; throws handover::InputError.
+  explicit HandoverCycle(const CycleSettings& settings);
+  HandoverCycle(const HandoverCycle&) = delete;
+  HandoverCycle& operator=(const HandoverCycle&) = delete;
+
+  /// Initial gripper command (closed on the object when `holds_object`,
+  /// with its payload; else open) and the controller's reset at `arm`
+  /// (velocities taken as zero). Call once before the first step.
+  void start(const io::ArmState& arm, bool holds_object);
+
+  /// One cycle at time `t` (s): stages 1-8 above. The reference stays valid
+  /// until the next call. RT safe.
+  const io::ArmCommand& step(double t, const io::ArmState& arm, perception::PoseSource& source);
+
+  /// Tears down the active states (end of a run).
+  void stop() { machine_->stop(); }
+
+  /// The QP's tasks and constraints, to add one at start-up (before
+  /// start(); docs/architecture.md). Not RT safe.
+  control::Formulation& formulation() { return controller_.formulation(); }
+
+  // --- read-outs of the last cycle (for logs, judges, tests) ---------------
+  const io::ArmCommand& command() const { return command_; }
+  const perception::PerceptionEstimate& estimate() const { return *estimate_; }
+  const perception::TargetOutput& target() const { return obs_target_.output(); }
+  const fsm::HandoverInput& fsmInput() const { return input_; }
+  const fsm::HandoverFsm& machine() const { return *machine_; }
+  const control::Controller& controller() const { return controller_; }
+  const ControllerAdapter& adapter() const { return adapter_; }
+  const control::CollisionConstraint& collision() const { return *collision_; }
+  /// Index of the person-hand/gripper rule the state machine relaxes (-1: none).
+  int handGripperRule() const { return hand_rule_; }
+  /// Hand and object velocities from perception, [linear; angular] world axes.
+  const Eigen::Matrix<double, 6, 1>& handVelocity() const { return hand_vel_.velocity(); }
+
+ private:
+  void assembleInput(double t, const io::ArmState& arm, const perception::PerceptionEstimate& est);
+
+  CycleSettings settings_;
+  control::Controller controller_;
+  std::shared_ptr<control::CollisionConstraint> collision_;
+  int hand_rule_ = -1;
+  int ft_frame_ = -1;
+  perception::PerceptionEstimator estimator_;
+  perception::ObservationTarget obs_target_;
+  ControllerAdapter adapter_;
+  std::unique_ptr<fsm::HandoverFsm> machine_;
+  Eigen::Isometry3d tcp_T_object_ = Eigen::Isometry3d::Identity();
+  SensedVelocity hand_vel_, object_vel_;
+  perception::PerceptionEstimate no_estimate_;  ///< before the first step
+  const perception::PerceptionEstimate* estimate_ = &no_estimate_;
+  fsm::HandoverInput input_;
+  control::ControlInputs control_in_;
+  io::ArmCommand command_;
+};
+
+}  // namespace handover::runtime

@@ -1,0 +1,48 @@
+// The one tracking-offset rule: on the object it keeps the object's symmetry,
+// approaches from the robot's base and lets an empty parallel gripper use
+// either finger; on the hand it does none of these. The placement passes
+// through unchanged either way.
+#include <gtest/gtest.h>
+
+#include "runtime/adapter/tracking_offset_rule.hpp"
+
+namespace handover::runtime {
+namespace {
+
+control::GraspOffset symmetricBottle() {
+  control::GraspOffset g;
+  g.placement.translation() = control::Vector3(0.0, 0.0, 0.05);
+  g.has_free_axis = true;
+  g.free_axis = control::Vector3::UnitX();
+  return g;
+}
+
+TEST(TrackingOffsetRule, OnTheObjectKeepsItsSymmetryAndBothFingerings) {
+  control::Isometry pre = control::Isometry::Identity();
+  pre.translation() = control::Vector3(0.0, 0.0, -0.08);
+  const control::GraspOffset g = makeTrackingOffset(pre, symmetricBottle(), true);
+  EXPECT_TRUE(g.placement.matrix() == pre.matrix());
+  EXPECT_TRUE(g.has_free_axis);
+  EXPECT_TRUE(g.free_axis == control::Vector3::UnitX());
+  EXPECT_TRUE(g.approach_from_base);
+  EXPECT_TRUE(g.base.isZero());
+  EXPECT_TRUE(g.parallel_gripper);
+}
+
+TEST(TrackingOffsetRule, OnTheHandIsARigidOffset) {
+  const control::Isometry placement = symmetricBottle().placement;
+  const control::GraspOffset g = makeTrackingOffset(placement, symmetricBottle(), false);
+  EXPECT_TRUE(g.placement.matrix() == placement.matrix());
+  EXPECT_FALSE(g.has_free_axis);
+  EXPECT_FALSE(g.parallel_gripper);
+}
+
+TEST(TrackingOffsetRule, AnObjectWithoutSymmetryGetsNone) {
+  control::GraspOffset box;  // no free axis
+  const control::GraspOffset g = makeTrackingOffset(control::Isometry::Identity(), box, true);
+  EXPECT_FALSE(g.has_free_axis);
+  EXPECT_TRUE(g.parallel_gripper);
+}
+
+}  // namespace
+}  // namespace handover::runtime

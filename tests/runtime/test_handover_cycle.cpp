@@ -1,0 +1,110 @@
+// HandoverCycle keeps the stage order and the input ages its header states:
+// the arm's sensing and the person's estimate are this cycle's; the TCP pose,
+// the tracking target and the robot-person distances the state machine sees
+// are those of the previous Controller::step; the command is this cycle's QP
+// torque with the state machine's gripper command.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "control/so3.hpp"
+#include "runtime/collision_queries.hpp"
+#include "runtime/handover_cycle.hpp"
+
+namespace handover::runtime {
+namespace {
+
+/// The person's hand 0.4 m in front of the TCP, the forearm straight
+/// through the robot's base (so the robot-arm distance is short), sampled
+/// every cycle.
+class HandInView : public perception::PoseSource {
+ public:
+  bool poll(double now, perception::PoseSample& out) override {
+    if (now <= last_) return false;
+    last_ = now;
+    out.stamp = now;
+    Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();
+    hand.translation() = Eigen::Vector3d(0.7, 0.05 * std::sin(now), 0.3);
+    out.hand = perception::Pose::fromIsometry(hand);
+    Eigen::Isometry3d forearm = Eigen::Isometry3d::Identity();
+    forearm.translation() = Eigen::Vector3d(-0.1, 0.0, 0.3);
+    forearm.linear() = control::expRotation(control::Vector3(0.0, M_PI / 2, 0.0));  // z along world x
+    out.forearm = perception::Pose::fromIsometry(forearm);
+    Eigen::Isometry3d upper = forearm;
+    upper.translation() += Eigen::Vector3d(0.0, 0.0, 0.3);
+    out.upper_arm = perception::Pose::fromIsometry(upper);
+    return true;
+  }
+
+ private:
+  double last_ = -1.0;
+};
+
+/// An arm that moves on its own (a slow sine on every joint), so that
+/// values of one cycle and of the previous one differ.
+io::ArmState armAt(const io::Vector7& q0, double t) {
+  io::ArmState a;
+  a.time = t;
+  for (int j = 0; j < 7; ++j) {
+    a.q[j] = q0[j] + 0.05 * std::sin(2.0 * t + j);
+    a.qd[j] = 0.1 * std::cos(2.0 * t + j);
+  }
+  a.finger_width = 0.08;
+  return a;
+}
+
+TEST(HandoverCycle, StateMachineSeesThisCyclesSensingAndLastCyclesController) {
+  HandoverCycle cycle(defaultCycleSettings());
+  const io::Vector7 q0 = cycle.controller().config().posture.target;
+  HandInView person;
+  cycle.start(armAt(q0, 0.0), false);
+  for (int k = 0; k < 50; ++k) {
+    const double t = k * 0.001;
+    const io::ArmState arm = armAt(q0, t);
+    // what the previous Controller::step left
+    const Eigen::Isometry3d tcp_before = cycle.controller().tcpPose();
+    const Eigen::Isometry3d target_before = cycle.controller().graspFrame().pose;
+    const auto& cm = cycle.collision().collisionModel();
+    const double arm_d_before = std::min(
+        2.0, personDistance(cm, cycle.collision().collisionData(), cycle.handGripperRule(), false, PersonPart::kArm));
+
+    const io::ArmCommand& cmd = cycle.step(t, arm, person);
+    const fsm::HandoverInput& in = cycle.fsmInput();
+    // this cycle
+    EXPECT_EQ(in.time, t);
+    EXPECT_TRUE(in.q == arm.q);
+    EXPECT_TRUE(in.qd == arm.qd);
+    EXPECT_TRUE(in.hand.pose.matrix() == cycle.estimate().human.hand.matrix());
+    // one cycle old
+    EXPECT_TRUE(in.tcp_pose.matrix() == tcp_before.matrix()) << "k = " << k;
+    EXPECT_TRUE(in.target_pose.matrix() == target_before.matrix()) << "k = " << k;
+    EXPECT_DOUBLE_EQ(in.arm_distance, arm_d_before);
+    // the command is this cycle's QP
+    EXPECT_TRUE(cmd.tau == cycle.controller().lastTau());
+    EXPECT_DOUBLE_EQ(cmd.gripper_width, cycle.adapter().gripperWidth());
+    if (k > 0) {
+      // the arm moved, so last cycle's TCP is not this cycle's
+      EXPECT_FALSE(cycle.controller().tcpPose().matrix().isApprox(in.tcp_pose.matrix(), 1e-12));
+    }
+  }
+  EXPECT_TRUE(cycle.fsmInput().hand.valid);
+  EXPECT_LT(cycle.fsmInput().arm_distance, 0.1);  // the person's forearm is in the collision model
+}
+
+TEST(HandoverCycle, StartSetsTheGripperAndPayload) {
+  HandoverCycle empty(defaultCycleSettings());
+  const io::Vector7 q0 = empty.controller().config().posture.target;
+  HandInView person;
+  empty.start(armAt(q0, 0.0), false);
+  EXPECT_DOUBLE_EQ(empty.step(0.0, armAt(q0, 0.0), person).gripper_width, 0.08);
+  EXPECT_FALSE(empty.adapter().payloadSet());
+
+  HandoverCycle holding(defaultCycleSettings());
+  holding.start(armAt(q0, 0.0), true);
+  EXPECT_TRUE(holding.adapter().payloadSet());
+  EXPECT_DOUBLE_EQ(holding.step(0.0, armAt(q0, 0.0), person).gripper_width, 0.0);
+  EXPECT_TRUE(holding.fsmInput().holds_object);
+}
+
+}  // namespace
+}  // namespace handover::runtime
