@@ -1,0 +1,131 @@
+#include "control/grasp/inverse_kinematics.hpp"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+#include <limits>
+
+#include "control/grasp/chain_kinematics.hpp"
+#include "control/so3.hpp"
+
+namespace handover::control::grasp {
+
+namespace {
+
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+
+// weighted error e = [dp; w * dtheta] and its plain norms
+struct PoseResidual {
+  Vector6 e;
+  double position = 0.0;
+  double orientation = 0.0;
+};
+
+PoseResidual residual(const Isometry& X, const Isometry& target, double w) {
+  PoseResidual r;
+  const Vector3 dp = target.translation() - X.translation();
+  const Vector3 dtheta = logRotation(target.linear() * X.linear().transpose());
+  r.e.head<3>() = dp;
+  r.e.tail<3>() = w * dtheta;
+  r.position = dp.norm();
+  r.orientation = dtheta.norm();
+  return r;
+}
+
+Vector7 clampToLimits(const Model& model, const Vector7& q, double clearance) {
+  Vector7 out;
+  for (int i = 0; i < kArmDofs; ++i) {
+    // a clearance larger than half the range collapses to the middle
+    const double lo = model.q_min[i] + clearance, hi = model.q_max[i] - clearance;
+    out[i] = lo <= hi ? std::min(std::max(q[i], lo), hi) : 0.5 * (model.q_min[i] + model.q_max[i]);
+  }
+  return out;
+}
+
+}  // namespace
+
+IkResult solveIk(const Model& model, int frame_id, const Isometry& target, const Vector7& seed,
+                 const IkOptions& options) {
+  IkResult result;
+  ChainPoses poses;
+  Matrix6x7 J;
+  const double w = options.orientation_weight;
+  const Vector7 q_mid = 0.5 * (model.q_min + model.q_max);
+  // gradient weights of sum(((q - q_mid) / half_range)^2), scaled so that the
+  // narrowest joint moves `nullspace_gain` of its way to the middle
+  const Vector7 half_range = 0.5 * (model.q_max - model.q_min);
+  const Vector7 limit_weight = (half_range.minCoeff() * half_range.cwiseInverse()).cwiseAbs2();
+
+  Vector7 q = clampToLimits(model, seed, options.limit_clearance);
+  double window_start_energy = -1.0;
+  for (int it = 0;; ++it) {
+    chainPoses(model, q, poses);
+    const PoseResidual r = residual(chainFramePose(model, poses, frame_id), target, w);
+    result.q = q;
+    result.iterations = it;
+    result.position_error = r.position;
+    result.orientation_error = r.orientation;
+    if (r.position < options.position_tolerance && r.orientation < options.orientation_tolerance) {
+      result.converged = true;
+      return result;
+    }
+    if (it >= options.max_iterations) return result;
+    const double energy = 0.5 * r.e.squaredNorm();
+    if (it % options.stall_window == 0) {
+      if (window_start_energy >= 0.0 && energy > (1.0 - options.stall_ratio) * window_start_energy) return result;
+      window_start_energy = energy;
+    }
+
+    chainFrameJacobian(model, poses, frame_id, J);
+    J.bottomRows<3>() *= w;
+    // primary: damped Gauss-Newton step on the weighted pose error
+    Matrix7 H = J.transpose() * J;
+    H.diagonal().array() += energy + options.damping;
+    Vector7 dq = H.ldlt().solve(J.transpose() * r.e);
+
+    // secondary: toward mid-range, inside the (damped) null space of J
+    // (not in the last few iterations: its second-order error would keep the
+    // task from converging to a tight tolerance)
+    const bool near = r.position < 10.0 * options.position_tolerance &&
+                      r.orientation < 10.0 * options.orientation_tolerance;
+    if (options.nullspace_gain > 0.0 && !near) {
+      // a tiny regulariser only: the projector's leak into the task grows with it
+      Matrix6d JJt = J * J.transpose();
+      JJt.diagonal().array() += 1e-9;
+      const Vector7 toward_mid = options.nullspace_gain * (q_mid - q).cwiseProduct(limit_weight);
+      dq += toward_mid - J.transpose() * JJt.ldlt().solve(J * toward_mid);
+    }
+
+    // bounded step keeps the linearisation meaningful far from the target
+    const double largest = dq.cwiseAbs().maxCoeff();
+    if (largest > options.max_step) dq *= options.max_step / largest;
+    q = clampToLimits(model, q + dq, options.limit_clearance);
+  }
+}
+
+IkResult solveIkMultiStart(const Model& model, int frame_id, const Isometry& target, const Vector7* seeds,
+                           int num_seeds, const IkOptions& options) {
+  IkResult best;
+  double best_residual = std::numeric_limits<double>::infinity();
+  for (int s = 0; s < num_seeds; ++s) {
+    const IkResult r = solveIk(model, frame_id, target, seeds[s], options);
+    if (r.converged) return r;
+    const double w = options.orientation_weight;
+    const double residual = r.position_error * r.position_error + w * w * r.orientation_error * r.orientation_error;
+    if (residual < best_residual) {
+      best_residual = residual;
+      best = r;
+    }
+  }
+  return best;
+}
+
+void poseError(const Model& model, int frame_id, const Vector7& q, const Isometry& target, double& position_error,
+               double& orientation_error) {
+  ChainPoses poses;
+  chainPoses(model, q, poses);
+  const PoseResidual r = residual(chainFramePose(model, poses, frame_id), target, 1.0);
+  position_error = r.position;
+  orientation_error = r.orientation;
+}
+
+}  // namespace handover::control::grasp
