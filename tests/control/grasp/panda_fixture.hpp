@@ -5,6 +5,7 @@
 #include <random>
 #include <string>
 
+#include "control/grasp/grasp_selection_config.hpp"
 #include "control/model/model.hpp"
 
 namespace handover::control::grasp::testing {
@@ -32,9 +33,11 @@ inline Vector7 readyConfiguration() {
   return q;
 }
 
-/// Smallest distance of any joint to its nearest limit (rad).
-inline double smallestLimitDistance(const Model& model, const Vector7& q) {
-  return std::min((q - model.q_min).minCoeff(), (model.q_max - q).minCoeff());
+/// The shipped config/grasp_selection.yaml.
+inline const GraspSelectionConfig& shippedConfig() {
+  static const GraspSelectionConfig config =
+      loadGraspSelectionConfig(std::string(HANDOVER_SOURCE_DIR) + "/config/grasp_selection.yaml");
+  return config;
 }
 
 }  // namespace handover::control::grasp::testing

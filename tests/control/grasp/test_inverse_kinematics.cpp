@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "control/grasp/chain_kinematics.hpp"
+#include "control/grasp/grasp_score.hpp"
 #include "control/grasp/inverse_kinematics.hpp"
 #include "tests/control/grasp/panda_fixture.hpp"
 
@@ -103,7 +104,7 @@ TEST(InverseKinematics, KeepsTheClearanceFromTheLimits) {
   for (int trial = 0; trial < 30; ++trial) {
     const Vector7 q_true = testing::randomConfiguration(model, rng);
     const IkResult r = solveIk(model, tcp, tcpPose(model, q_true), testing::readyConfiguration(), options);
-    EXPECT_GE(testing::smallestLimitDistance(model, r.q), options.limit_clearance - 1e-12);
+    EXPECT_GE(smallestLimitDistance(model, r.q), options.limit_clearance - 1e-12);
   }
 }
 

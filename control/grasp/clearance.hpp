@@ -1,0 +1,27 @@
+// Clearance between the arm's collision capsules and obstacle capsules given
+// by the caller (e.g. the person's forearm and hand from perception), for
+// scoring a configuration. Analytic segment-segment distance; no FCL here
+// (this runs over every candidate, and no witness points are needed).
+// Frames: world. Units: m. Real-time safe.
+#pragma once
+
+#include "control/grasp/chain_kinematics.hpp"
+
+namespace handover::control::grasp {
+
+/// A capsule in the world: the segment [a, b] swept by a sphere of `radius`.
+struct ObstacleCapsule {
+  Vector3 a = Vector3::Zero();  ///< m, world
+  Vector3 b = Vector3::Zero();  ///< m, world
+  double radius = 0.0;          ///< m
+};
+
+/// Smallest distance between the segments [p0, p1] and [q0, q1] (m).
+double segmentDistance(const Vector3& p0, const Vector3& p1, const Vector3& q0, const Vector3& q1);
+
+/// Smallest surface distance between any of the model's capsules posed by
+/// `poses` and any obstacle (m, negative when they overlap); +infinity
+/// without obstacles.
+double armClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles, int num_obstacles);
+
+}  // namespace handover::control::grasp
