@@ -88,8 +88,8 @@ GraspSelectionConfig graspSelectionConfigFrom(const YamlReader& root) {
   if (auto r = root.optionalChild("candidates")) c.candidates = readCandidates(*r);
   if (auto r = root.optionalChild("score")) c.score = readScore(*r);
   c.hysteresis = nonNegative(root, "hysteresis", c.hysteresis, 1e3);
-  if (auto r = root.optionalChild("cold_candidates_per_update")) {
-    c.cold_candidates_per_update = static_cast<int>(r->checkRange(r->asInt(), 0, 100000));
+  if (auto r = root.optionalChild("cold_solves_per_update")) {
+    c.cold_solves_per_update = static_cast<int>(r->checkRange(r->asInt(), 0, 100000));
   }
   if (auto r = root.optionalChild("upright")) c.upright = readUpright(*r);
   root.finish();

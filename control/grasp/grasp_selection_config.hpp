@@ -27,10 +27,12 @@ struct GraspSelectionConfig {
   CandidateOptions candidates;
   ScoreWeights score;
   double hysteresis = 0.15;           ///< score units another candidate must gain to replace the current choice
-  /// Candidates without a warm start solved from every seed per update (0 = all).
-  /// Bounds the cost of candidates that stay unreachable; ignored while no
-  /// candidate has a solution yet (then all are solved).
-  int cold_candidates_per_update = 2;
+  /// IK solves from one fixed seed spent per update on candidates without a
+  /// warm start (unreachable so far, or lost), round-robin; bounds the cost of
+  /// candidates that stay out of reach. 0 = every seed for every such
+  /// candidate in every update. While no candidate has a solution yet, all
+  /// seeds are tried regardless.
+  int cold_solves_per_update = 2;
   UprightOptions upright;
 };
 

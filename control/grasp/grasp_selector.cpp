@@ -12,6 +12,7 @@ GraspSelector::GraspSelector(const Model& model, const std::vector<GraspSpec>& s
   candidates_ = enumerateGraspCandidates(specs, config.candidates);
   evaluations_.resize(candidates_.size());
   warm_.assign(candidates_.size(), false);
+  next_seed_.assign(candidates_.size(), 0);
   seeds_.reserve(config.seeds.size() + 1);
   seeds_.push_back(Vector7::Zero());
   seeds_.insert(seeds_.end(), config.seeds.begin(), config.seeds.end());
@@ -19,6 +20,7 @@ GraspSelector::GraspSelector(const Model& model, const std::vector<GraspSpec>& s
 
 void GraspSelector::reset() {
   std::fill(warm_.begin(), warm_.end(), false);
+  std::fill(next_seed_.begin(), next_seed_.end(), 0);
   for (CandidateEvaluation& e : evaluations_) e = CandidateEvaluation();
   choice_ = GraspChoice();
   cold_cursor_ = 0;
@@ -51,20 +53,22 @@ bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, 
 }
 
 void GraspSelector::evaluate(int k, const Isometry& X_obj, const Vector7& q_now, const ObstacleCapsule* obstacles,
-                             int num_obstacles, bool cold) {
+                             int num_obstacles, Start start) {
   CandidateEvaluation& e = evaluations_[k];
   e.evaluated = true;
   e.iterations = 0;
   e.grasp = graspInWorld(X_obj, candidates_[k]);
   e.pre_grasp = preGraspOf(e.grasp, config_.candidates.pre_grasp_standoff);
 
-  if (!cold) {
-    const Vector7 warm = e.q_grasp;
-    e.feasible = solvePair(e.grasp, e.pre_grasp, warm, q_now, obstacles, num_obstacles, e);
+  if (start == Start::kWarm || start == Start::kNextSeed) {
+    int& next = next_seed_[k];
+    const Vector7 seed = start == Start::kWarm ? e.q_grasp : seeds_[next];
+    if (start == Start::kNextSeed) next = (next + 1) % static_cast<int>(seeds_.size());
+    e.feasible = solvePair(e.grasp, e.pre_grasp, seed, q_now, obstacles, num_obstacles, e);
     warm_[k] = e.feasible;
     return;
   }
-  // cold: every seed, keep the best-scoring solution
+  // every seed, keep the best-scoring solution
   CandidateEvaluation trial;
   e.feasible = false;
   for (const Vector7& seed : seeds_) {
@@ -85,26 +89,30 @@ const GraspChoice& GraspSelector::update(const Isometry& X_obj, const Vector7& q
                                          int num_obstacles) {
   seeds_[0] = q_now;
   const int n = static_cast<int>(candidates_.size());
-  // warm candidates every time; cold ones (unreachable so far, or lost) within
-  // the budget, round-robin, except when nothing is warm: then all of them
+  // Warm candidates every time. The others (unreachable so far, or lost):
+  // from every seed while nothing is reachable yet (a new object) or when the
+  // budget is 0; else one seed each, round-robin over candidates and seeds,
+  // at most `cold_solves_per_update` of them.
   const bool any_warm = std::find(warm_.begin(), warm_.end(), true) != warm_.end();
-  const int budget = (config_.cold_candidates_per_update > 0 && any_warm) ? config_.cold_candidates_per_update : n;
+  const bool all_seeds = !any_warm || config_.cold_solves_per_update == 0;
   int cold_done = 0, last_cold = -1;
   for (int i = 0; i < n; ++i) {
     const int k = (cold_cursor_ + i) % n;
     if (warm_[k]) {
-      evaluate(k, X_obj, q_now, obstacles, num_obstacles, false);
-      // a warm solve that failed gets a cold one in the same update if the budget allows
-      if (warm_[k] || cold_done >= budget) continue;
-    } else if (cold_done >= budget) {
+      evaluate(k, X_obj, q_now, obstacles, num_obstacles, Start::kWarm);
+      if (warm_[k]) continue;  // a failed warm solve falls through to a cold one
+    }
+    if (all_seeds) {
+      evaluate(k, X_obj, q_now, obstacles, num_obstacles, Start::kAllSeeds);
+    } else if (cold_done < config_.cold_solves_per_update) {
+      evaluate(k, X_obj, q_now, obstacles, num_obstacles, Start::kNextSeed);
+      ++cold_done;
+      last_cold = k;
+    } else {
       evaluations_[k].evaluated = false;
       evaluations_[k].feasible = false;
       evaluations_[k].iterations = 0;
-      continue;
     }
-    evaluate(k, X_obj, q_now, obstacles, num_obstacles, true);
-    ++cold_done;
-    last_cold = k;
   }
   // the next update's cold solves start after the last one of this update
   if (last_cold >= 0) cold_cursor_ = (last_cold + 1) % n;

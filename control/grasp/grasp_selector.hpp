@@ -7,11 +7,12 @@
 // keeps the current choice unless another feasible candidate beats it by
 // `hysteresis`, or the current one became unreachable. IK starts warm from each
 // candidate's previous solution; a candidate without one (first update, or its
-// warm solve failed) is solved from the current q and every fixed seed, and
-// keeps the best-scoring solution; at most `cold_candidates_per_update` such
-// cold solves run per update (round-robin), so candidates that stay out of
-// reach are re-tried every few updates instead of costing every update. The chosen configuration is meant as the
-// posture task's reference (redundancy resolution).
+// warm solve failed) is solved from the current q and every fixed seed on the
+// first update, keeping the best-scoring solution; later, such candidates get
+// one seed each, round-robin, at most `cold_solves_per_update` solves per
+// update, so candidates that stay out of reach cost little. The chosen
+// configuration is meant as the posture task's reference (redundancy
+// resolution).
 //
 // Frames: object pose and outputs in the world; configurations in rad.
 // Real-time safety: the constructor allocates; update() does not (all storage
@@ -69,8 +70,9 @@ class GraspSelector {
   const GraspSelectionConfig& config() const { return config_; }
 
  private:
+  enum class Start { kWarm, kNextSeed, kAllSeeds };
   void evaluate(int k, const Isometry& X_obj, const Vector7& q_now, const ObstacleCapsule* obstacles,
-                int num_obstacles, bool cold);
+                int num_obstacles, Start start);
   bool solvePair(const Isometry& grasp, const Isometry& pre_grasp, const Vector7& seed, const Vector7& q_now,
                  const ObstacleCapsule* obstacles, int num_obstacles, CandidateEvaluation& out);
 
@@ -80,6 +82,7 @@ class GraspSelector {
   std::vector<GraspCandidate> candidates_;
   std::vector<CandidateEvaluation> evaluations_;
   std::vector<bool> warm_;      ///< candidate k has a converged solution to start from
+  std::vector<int> next_seed_;  ///< candidate k's next cold seed (index into seeds_)
   std::vector<Vector7> seeds_;  ///< [q_now, fixed seeds...], slot 0 rewritten each update
   int cold_cursor_ = 0;         ///< round-robin start of the cold budget
   GraspChoice choice_;
