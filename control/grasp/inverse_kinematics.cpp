@@ -1,6 +1,7 @@
 #include "control/grasp/inverse_kinematics.hpp"
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -56,10 +57,13 @@ IkResult solveIk(const Model& model, int frame_id, const Isometry& target, const
   const Vector7 limit_weight = (half_range.minCoeff() * half_range.cwiseInverse()).cwiseAbs2();
 
   Vector7 q = clampToLimits(model, seed, options.limit_clearance);
-  double window_start_energy = -1.0;
+  chainPoses(model, q, poses);
+  PoseResidual r = residual(chainFramePose(model, poses, frame_id), target, w);
+  double energy = 0.5 * r.e.squaredNorm();
+  double mu = 1.0;  // grows on rejected steps (trust region shrinks), back toward 1 on accepted ones
+  double window_start_energy = energy;
+  ChainPoses trial_poses;
   for (int it = 0;; ++it) {
-    chainPoses(model, q, poses);
-    const PoseResidual r = residual(chainFramePose(model, poses, frame_id), target, w);
     result.q = q;
     result.iterations = it;
     result.position_error = r.position;
@@ -69,9 +73,8 @@ IkResult solveIk(const Model& model, int frame_id, const Isometry& target, const
       return result;
     }
     if (it >= options.max_iterations) return result;
-    const double energy = 0.5 * r.e.squaredNorm();
-    if (it % options.stall_window == 0) {
-      if (window_start_energy >= 0.0 && energy > (1.0 - options.stall_ratio) * window_start_energy) return result;
+    if (it > 0 && it % options.stall_window == 0) {
+      if (energy > (1.0 - options.stall_ratio) * window_start_energy) return result;
       window_start_energy = energy;
     }
 
@@ -79,7 +82,7 @@ IkResult solveIk(const Model& model, int frame_id, const Isometry& target, const
     J.bottomRows<3>() *= w;
     // primary: damped Gauss-Newton step on the weighted pose error
     Matrix7 H = J.transpose() * J;
-    H.diagonal().array() += energy + options.damping;
+    H.diagonal().array() += mu * (energy + options.damping);
     Vector7 dq = H.ldlt().solve(J.transpose() * r.e);
 
     // secondary: toward mid-range, inside the (damped) null space of J
@@ -92,13 +95,32 @@ IkResult solveIk(const Model& model, int frame_id, const Isometry& target, const
       Matrix6d JJt = J * J.transpose();
       JJt.diagonal().array() += 1e-9;
       const Vector7 toward_mid = options.nullspace_gain * (q_mid - q).cwiseProduct(limit_weight);
-      dq += toward_mid - J.transpose() * JJt.ldlt().solve(J * toward_mid);
+      Vector7 dq_null = toward_mid - J.transpose() * JJt.ldlt().solve(J * toward_mid);
+      // near a singularity the projection is ill-conditioned: a large step
+      // here leaves second-order task errors that the next step undoes
+      const double n = dq_null.cwiseAbs().maxCoeff();
+      const double cap = options.nullspace_max_step / mu;
+      if (n > cap) dq_null *= cap / n;
+      dq += dq_null;
     }
 
     // bounded step keeps the linearisation meaningful far from the target
     const double largest = dq.cwiseAbs().maxCoeff();
     if (largest > options.max_step) dq *= options.max_step / largest;
-    q = clampToLimits(model, q + dq, options.limit_clearance);
+    const Vector7 q_trial = clampToLimits(model, q + dq, options.limit_clearance);
+    chainPoses(model, q_trial, trial_poses);
+    const PoseResidual r_trial = residual(chainFramePose(model, trial_poses, frame_id), target, w);
+    const double trial_energy = 0.5 * r_trial.e.squaredNorm();
+    // Levenberg-Marquardt: keep a step only if it lowers the error, else damp more
+    if (trial_energy < energy) {
+      q = q_trial;
+      poses = trial_poses;
+      r = r_trial;
+      energy = trial_energy;
+      mu = std::max(1.0, mu / 3.0);
+    } else {
+      mu *= 4.0;
+    }
   }
 }
 

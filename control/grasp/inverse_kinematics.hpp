@@ -4,16 +4,19 @@
 // Each iteration solves (J' W J + lambda I) dq = J' W e, with the error
 // e = [p_target - p; log(R_target R')] in world axes, W weighting the rotation
 // rows by `orientation_weight` (m/rad) so that both halves are comparable, and
-// lambda = E + damping where E = e' W e / 2 (Sugihara's choice: large steps
-// are damped far from the target, near-Gauss-Newton steps close to it). A
-// secondary step, projected into the null space of J, pulls the joints toward
-// the middle of their ranges (redundancy resolution away from the limits);
-// the configuration is then clamped into the limits minus `limit_clearance`.
+// lambda = mu (E + damping) where E = e' W e / 2 (Sugihara's choice: large
+// steps are damped far from the target, near-Gauss-Newton steps close to it).
+// A step is kept only if it lowers E; a rejected one multiplies mu by 4 (an
+// accepted one divides it by 3, down to 1), which keeps the iteration from
+// oscillating near singular configurations. A secondary step, projected into
+// the null space of J, pulls the joints toward the middle of their ranges
+// (redundancy resolution away from the limits); the configuration is then
+// clamped into the limits minus `limit_clearance`.
 //
 // Frames: the target is the world pose of model frame `frame_id` (e.g. "tcp").
 // Units: m, rad. Real-time safe: fixed-size Eigen storage only, no heap
 // allocation and no exceptions, so it may run inside a control or sensor
-// cycle; the cost is bounded by max_iterations (about 0.4 us an iteration).
+// cycle; the cost is bounded by max_iterations (about 1 us an iteration).
 #pragma once
 
 #include "control/model/model.hpp"
@@ -21,7 +24,7 @@
 namespace handover::control::grasp {
 
 struct IkOptions {
-  int max_iterations = 80;
+  int max_iterations = 80;               ///< linear solves, accepted or rejected
   double position_tolerance = 1e-4;      ///< m, converged when the position error is below
   double orientation_tolerance = 1e-3;   ///< rad, and the rotation error is below this
   double orientation_weight = 0.3;       ///< m/rad, weight of the rotation rows against the position rows
@@ -29,6 +32,7 @@ struct IkOptions {
   double max_step = 0.3;                 ///< rad, largest joint change in one iteration (inf-norm)
   double limit_clearance = 0.01;         ///< rad, kept from each joint limit by clamping
   double nullspace_gain = 0.1;           ///< fraction of the distance to mid-range moved per iteration (null space)
+  double nullspace_max_step = 0.05;      ///< rad, largest null-space joint change in one iteration (inf-norm)
   /// Iterations stop early when the weighted error drops by less than this
   /// fraction over `stall_window` iterations (a local minimum, e.g. against a limit).
   double stall_ratio = 1e-3;
