@@ -45,4 +45,14 @@ double armClearance(const Model& model, const ChainPoses& poses, const ObstacleC
   return best;
 }
 
+double lowestArmPoint(const Model& model, const ChainPoses& poses, int first_body) {
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const Capsule& c : model.capsules) {
+    if (c.body < first_body) continue;
+    const Isometry& X = poses.oMb[c.body];
+    lowest = std::min(lowest, std::min((X * c.a).z(), (X * c.b).z()) - c.radius);
+  }
+  return lowest;
+}
+
 }  // namespace handover::control::grasp

@@ -1,6 +1,6 @@
 // Clearance between the arm's collision capsules and obstacle capsules given
-// by the caller (e.g. the person's forearm and hand from perception), for
-// scoring a configuration. Analytic segment-segment distance; no FCL here
+// by the caller (e.g. the person's forearm and hand from perception), and
+// from the table top, for scoring and filtering configurations. Analytic segment-segment distance; no FCL here
 // (this runs over every candidate, and no witness points are needed).
 // Frames: world. Units: m. Real-time safe.
 #pragma once
@@ -23,5 +23,9 @@ double segmentDistance(const Vector3& p0, const Vector3& p1, const Vector3& q0, 
 /// `poses` and any obstacle (m, negative when they overlap); +infinity
 /// without obstacles.
 double armClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles, int num_obstacles);
+
+/// Lowest point (world z, m) of the capsules of bodies `first_body`.. (the
+/// base and link 1 stand on the table and are left out with first_body = 2).
+double lowestArmPoint(const Model& model, const ChainPoses& poses, int first_body = 2);
 
 }  // namespace handover::control::grasp

@@ -87,6 +87,11 @@ GraspSelectionConfig graspSelectionConfigFrom(const YamlReader& root) {
   if (auto r = root.optionalChild("ik")) c.ik = readIk(*r, c.seeds);
   if (auto r = root.optionalChild("candidates")) c.candidates = readCandidates(*r);
   if (auto r = root.optionalChild("score")) c.score = readScore(*r);
+  if (auto r = root.optionalChild("table")) {
+    if (auto h = r->optionalChild("height")) c.table_height = h->checkRange(h->asDouble(), -10.0, 10.0);
+    c.table_clearance = nonNegative(*r, "clearance", c.table_clearance, 1.0);
+    r->finish();
+  }
   c.hysteresis = nonNegative(root, "hysteresis", c.hysteresis, 1e3);
   if (auto r = root.optionalChild("cold_solves_per_update")) {
     c.cold_solves_per_update = static_cast<int>(r->checkRange(r->asInt(), 0, 100000));

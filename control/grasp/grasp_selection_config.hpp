@@ -26,6 +26,10 @@ struct GraspSelectionConfig {
   std::vector<Vector7> seeds;         ///< rad, fixed IK seeds tried after the current q on a cold start
   CandidateOptions candidates;
   ScoreWeights score;
+  /// The table top (world z, m): a configuration whose arm capsules (link 2
+  /// onward) dip below table_height + table_clearance is not reachable.
+  double table_height = 0.0;
+  double table_clearance = 0.02;
   double hysteresis = 0.15;           ///< score units another candidate must gain to replace the current choice
   /// IK solves from one fixed seed spent per update on candidates without a
   /// warm start (unreachable so far, or lost), round-robin; bounds the cost of

@@ -39,8 +39,11 @@ bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, 
 
   ChainPoses poses;
   chainPoses(model_, p.q, poses);
+  const double floor = config_.table_height + config_.table_clearance;
+  if (lowestArmPoint(model_, poses) < floor) return false;
   const ScoreTerms pre = scoreConfiguration(model_, frame_, poses, p.q, q_now, obstacles, num_obstacles, config_.score);
   chainPoses(model_, g.q, poses);
+  if (lowestArmPoint(model_, poses) < floor) return false;
   ScoreTerms t = scoreConfiguration(model_, frame_, poses, g.q, q_now, obstacles, num_obstacles, config_.score);
   // the arm must pass the pre-grasp too: the worse margin and clearance count
   t.joint_margin = std::min(t.joint_margin, pre.joint_margin);

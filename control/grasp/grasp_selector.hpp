@@ -29,7 +29,7 @@ namespace handover::control::grasp {
 /// What update() learned about one candidate.
 struct CandidateEvaluation {
   bool evaluated = false;       ///< solved in the last update (false: skipped by the cold budget)
-  bool feasible = false;        ///< grasp and pre-grasp IK both converged
+  bool feasible = false;        ///< grasp and pre-grasp IK both converged, the arm above the table
   Isometry grasp = Isometry::Identity();      ///< world
   Isometry pre_grasp = Isometry::Identity();  ///< world
   Vector7 q_grasp = Vector7::Zero();

@@ -34,6 +34,7 @@ UprightPlacement findUprightPlacement(const Model& model, const HeldObject& held
         ++best.ik_solves;
         if (!r.converged) continue;
         chainPoses(model, r.q, poses);
+        if (lowestArmPoint(model, poses) < config.table_height + config.table_clearance) continue;
         const Vector3 up_world = (chainFramePose(model, poses, frame) * held.object_in_tcp).linear() * up;
         const double tilt = std::acos(std::clamp(up_world.z(), -1.0, 1.0));
         if (tilt > o.tilt_tolerance) continue;

@@ -8,7 +8,7 @@
 // IK solves it from the current q then the fixed seeds, and the best-scoring
 // solution (grasp_score.hpp: joint margin, manipulability, motion from q_now)
 // at the first position with any solution wins. A solution whose object tilt
-// exceeds `tilt_tolerance` is rejected.
+// exceeds `tilt_tolerance`, or whose arm dips into the table, is rejected.
 //
 // Frames: world; the grasp is the object's pose in the TCP frame. Units: m, rad.
 // Real-time safe (no allocation) but not cheap: up to positions x turns x

@@ -45,6 +45,7 @@ ik: {max_iterations: 12, position_tolerance: 2.0e-4, orientation_tolerance_deg: 
 candidates: {free_axis_step_deg: 45, parallel_gripper_twin: false, pre_grasp_standoff: 0.05}
 score: {joint_margin: 3.0, margin_ref: 0.4, motion: 0.0}
 hysteresis: 0.3
+table: {height: 0.1, clearance: 0.05}
 cold_solves_per_update: 5
 upright: {yaw_step_deg: 20, tilt_tolerance_deg: 5, position_offsets: [[0, 0, 0], [0, 0, 0.1]]}
 )");
@@ -61,6 +62,8 @@ upright: {yaw_step_deg: 20, tilt_tolerance_deg: 5, position_offsets: [[0, 0, 0],
   EXPECT_DOUBLE_EQ(c.score.margin_ref, 0.4);
   EXPECT_DOUBLE_EQ(c.score.motion, 0.0);
   EXPECT_DOUBLE_EQ(c.hysteresis, 0.3);
+  EXPECT_DOUBLE_EQ(c.table_height, 0.1);
+  EXPECT_DOUBLE_EQ(c.table_clearance, 0.05);
   EXPECT_EQ(c.cold_solves_per_update, 5);
   EXPECT_NEAR(c.upright.tilt_tolerance, 5.0 * M_PI / 180.0, 1e-12);
   ASSERT_EQ(c.upright.position_offsets.size(), 2u);

@@ -74,6 +74,50 @@ TEST(GraspSelector, SideGraspsAroundTheWorkspaceAreReachable) {
   }
 }
 
+TEST(GraspSelector, FortyFiveDegreeGraspOfABottleIsReachable) {
+  const Model& model = testing::panda();
+  GraspSpec s = bottleSideGrasp();
+  s.placement.linear() = Eigen::AngleAxisd(3 * M_PI / 4, Vector3::UnitY()).toRotationMatrix();  // 45 deg from above
+  GraspSelector selector(model, {s}, testing::shippedConfig());
+  const GraspChoice& c = selector.update(bottleAt(Vector3(0.55, 0.0, 0.30)), testing::readyConfiguration());
+  ASSERT_TRUE(c.valid);
+  EXPECT_NEAR(c.grasp.linear().col(2).z(), -std::sqrt(0.5), 1e-9);
+  EXPECT_GE(smallestLimitDistance(model, c.q_grasp), 0.2);
+  EXPECT_GE(smallestLimitDistance(model, c.q_pre_grasp), 0.2);
+}
+
+TEST(GraspSelector, LongObjectPointingAtTheRobotIsNotTakenFromBelowTheTable) {
+  // issue 12: a long object carried horizontally, pointing at the robot, low
+  // over the table; the grasp closes across its axis from any side around it
+  const Model& model = testing::panda();
+  GraspSpec across;
+  across.placement.linear() = Eigen::AngleAxisd(-M_PI / 2, Vector3::UnitY()).toRotationMatrix();
+  across.has_free_axis = true;
+  Isometry X_obj = Isometry::Identity();
+  X_obj.linear() = Eigen::AngleAxisd(-M_PI / 2, Vector3::UnitY()).toRotationMatrix();  // object z along world -x
+  X_obj.translation() = Vector3(0.5, 0.0, 0.20);  // low enough that the hand would reach into the table from below
+  GraspSelector selector(model, {across}, testing::shippedConfig());
+  const GraspChoice& c = selector.update(X_obj, testing::readyConfiguration());
+  ASSERT_TRUE(c.valid);
+  EXPECT_LT(c.grasp.linear().col(2).z(), 0.5);  // not coming up from below
+  EXPECT_GE(smallestLimitDistance(model, c.q_grasp), 0.2);
+  // every candidate that comes from below is out: its hand would be in the table
+  int from_below = 0;
+  for (const CandidateEvaluation& e : selector.evaluations()) {
+    if (e.grasp.linear().col(2).z() > 0.9) {
+      ++from_below;
+      EXPECT_FALSE(e.feasible);
+    }
+  }
+  EXPECT_GT(from_below, 0);
+  // and the arm of the chosen configurations stays above it
+  ChainPoses poses;
+  chainPoses(model, c.q_grasp, poses);
+  EXPECT_GE(lowestArmPoint(model, poses), testing::shippedConfig().table_clearance);
+  chainPoses(model, c.q_pre_grasp, poses);
+  EXPECT_GE(lowestArmPoint(model, poses), testing::shippedConfig().table_clearance);
+}
+
 TEST(GraspSelector, PrefersTheCandidateWithLargerJointMargins) {
   // two declared grasps, both reachable: A only with the elbow folded to
   // 0.12 rad from its limit (the elbow angle follows from the shoulder-wrist
