@@ -62,15 +62,22 @@ TEST(GraspSelector, SideGraspOfAnUprightBottleStaysAwayFromEveryLimit) {
   }
 }
 
-TEST(GraspSelector, SideGraspsAroundTheWorkspaceAreReachable) {
+TEST(GraspSelector, SideAndFortyFiveDegreeGraspsOverTheHandoverRegion) {
+  // where people offer objects: 0.4-0.7 m in front, 0.5 m wide, 0.2-0.4 m above the table
   const Model& model = testing::panda();
-  GraspSelector selector(model, {bottleSideGrasp()}, testing::shippedConfig());
-  for (const Vector3& p : {Vector3(0.45, 0.25, 0.25), Vector3(0.50, -0.30, 0.40), Vector3(0.65, 0.0, 0.15),
-                           Vector3(0.40, 0.0, 0.55)}) {
-    selector.reset();
-    const GraspChoice& c = selector.update(bottleAt(p), testing::readyConfiguration());
-    ASSERT_TRUE(c.valid) << p.transpose();
-    EXPECT_GE(smallestLimitDistance(model, c.q_grasp), 0.15) << p.transpose();
+  for (double elevation : {0.0, M_PI / 4}) {
+    GraspSpec s = bottleSideGrasp();
+    s.placement.linear() = Eigen::AngleAxisd(M_PI / 2 + elevation, Vector3::UnitY()).toRotationMatrix();
+    GraspSelector selector(model, {s}, testing::shippedConfig());
+    for (double x : {0.4, 0.55, 0.7})
+      for (double y : {-0.25, 0.0, 0.25})
+        for (double z : {0.2, 0.4}) {
+          selector.reset();
+          const GraspChoice& c = selector.update(bottleAt(Vector3(x, y, z)), testing::readyConfiguration());
+          ASSERT_TRUE(c.valid) << x << " " << y << " " << z;
+          EXPECT_GE(smallestLimitDistance(model, c.q_grasp), 0.2) << x << " " << y << " " << z;
+          EXPECT_GE(smallestLimitDistance(model, c.q_pre_grasp), 0.2) << x << " " << y << " " << z;
+        }
   }
 }
 
