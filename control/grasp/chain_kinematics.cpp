@@ -1,5 +1,7 @@
 #include "control/grasp/chain_kinematics.hpp"
 
+#include <cmath>
+
 namespace handover::control::grasp {
 
 void chainPoses(const Model& model, const Vector7& q, ChainPoses& poses) {
@@ -11,7 +13,17 @@ void chainPoses(const Model& model, const Vector7& q, ChainPoses& poses) {
     const Matrix3 R_joint = parent.linear() * joint.linear();
     poses.axis[i] = R_joint * model.joint_axes[i - 1];
     poses.oMb[i].translation() = parent * joint.translation();
-    poses.oMb[i].linear() = R_joint * Eigen::AngleAxisd(q[i - 1], model.joint_axes[i - 1]).toRotationMatrix();
+    const Vector3& a = model.joint_axes[i - 1];
+    if (a.x() == 0.0 && a.y() == 0.0 && a.z() == 1.0) {
+      // the URDF's joints turn about z: R_joint Rz(q) mixes two columns only
+      const double c = std::cos(q[i - 1]), s = std::sin(q[i - 1]);
+      auto R = poses.oMb[i].linear();
+      R.col(0) = c * R_joint.col(0) + s * R_joint.col(1);
+      R.col(1) = c * R_joint.col(1) - s * R_joint.col(0);
+      R.col(2) = R_joint.col(2);
+    } else {
+      poses.oMb[i].linear() = R_joint * Eigen::AngleAxisd(q[i - 1], a).toRotationMatrix();
+    }
   }
 }
 

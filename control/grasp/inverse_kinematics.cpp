@@ -80,10 +80,14 @@ IkResult solveIk(const Model& model, int frame_id, const Isometry& target, const
 
     chainFrameJacobian(model, poses, frame_id, J);
     J.bottomRows<3>() *= w;
-    // primary: damped Gauss-Newton step on the weighted pose error
-    Matrix7 H = J.transpose() * J;
-    H.diagonal().array() += mu * (energy + options.damping);
-    Vector7 dq = H.ldlt().solve(J.transpose() * r.e);
+    // primary: damped Gauss-Newton step on the weighted pose error, in the
+    // 6x6 form (J'J + lambda I)^-1 J' = J' (J J' + lambda I)^-1, whose J J'
+    // the null-space projector below shares
+    const Matrix6d JJt = J * J.transpose();
+    Matrix6d A = JJt;
+    A.diagonal().array() += mu * (energy + options.damping);
+    // positive definite (lambda > 0): Cholesky without pivoting, the cheapest
+    Vector7 dq = J.transpose() * A.llt().solve(r.e);
 
     // secondary: toward mid-range, inside the (damped) null space of J
     // (not in the last few iterations: its second-order error would keep the
@@ -92,10 +96,10 @@ IkResult solveIk(const Model& model, int frame_id, const Isometry& target, const
                       r.orientation < 10.0 * options.orientation_tolerance;
     if (options.nullspace_gain > 0.0 && !near) {
       // a tiny regulariser only: the projector's leak into the task grows with it
-      Matrix6d JJt = J * J.transpose();
-      JJt.diagonal().array() += 1e-9;
+      Matrix6d B = JJt;
+      B.diagonal().array() += 1e-9;
       const Vector7 toward_mid = options.nullspace_gain * (q_mid - q).cwiseProduct(limit_weight);
-      Vector7 dq_null = toward_mid - J.transpose() * JJt.ldlt().solve(J * toward_mid);
+      Vector7 dq_null = toward_mid - J.transpose() * B.llt().solve(J * toward_mid);
       // near a singularity the projection is ill-conditioned: a large step
       // here leaves second-order task errors that the next step undoes
       const double n = dq_null.cwiseAbs().maxCoeff();

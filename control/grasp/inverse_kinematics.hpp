@@ -1,7 +1,8 @@
 // Inverse kinematics of a full frame pose (position + orientation) on our own
 // model: a Levenberg-Marquardt iteration with joint limits.
 //
-// Each iteration solves (J' W J + lambda I) dq = J' W e, with the error
+// Each iteration takes dq = (J' W J + lambda I)^-1 J' W e (computed in the
+// equivalent 6x6 form J_w' (J_w J_w' + lambda I)^-1 e_w), with the error
 // e = [p_target - p; log(R_target R')] in world axes, W weighting the rotation
 // rows by `orientation_weight` (m/rad) so that both halves are comparable, and
 // lambda = mu (E + damping) where E = e' W e / 2 (Sugihara's choice: large
