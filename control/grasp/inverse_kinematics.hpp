@@ -29,7 +29,7 @@ struct IkOptions {
   double position_tolerance = 1e-4;      ///< m, converged when the position error is below
   double orientation_tolerance = 1e-3;   ///< rad, and the rotation error is below this
   double orientation_weight = 0.3;       ///< m/rad, weight of the rotation rows against the position rows
-  double damping = 1e-4;                 ///< lambda's floor (m^2): regularises near singularities
+  double damping = 1e-5;                 ///< lambda's floor (m^2): regularises near singularities
   double max_step = 0.3;                 ///< rad, largest joint change in one iteration (inf-norm)
   double limit_clearance = 0.01;         ///< rad, kept from each joint limit by clamping
   double nullspace_gain = 0.1;           ///< fraction of the distance to mid-range moved per iteration (null space)
