@@ -90,6 +90,10 @@ void GraspSelector::evaluate(int k, const Isometry& X_obj, const Vector7& q_now,
 
 const GraspChoice& GraspSelector::update(const Isometry& X_obj, const Vector7& q_now, const ObstacleCapsule* obstacles,
                                          int num_obstacles) {
+  if (!X_obj.matrix().allFinite() || !q_now.allFinite()) {
+    choice_.switched = false;
+    return choice_;
+  }
   seeds_[0] = q_now;
   const int n = static_cast<int>(candidates_.size());
   // Warm candidates every time. The others (unreachable so far, or lost):
@@ -137,6 +141,7 @@ const GraspChoice& GraspSelector::update(const Isometry& X_obj, const Vector7& q
   if (pick >= 0) {
     const CandidateEvaluation& e = evaluations_[pick];
     choice_.grasp = e.grasp;
+    choice_.grasp_in_object = candidates_[pick].in_object;
     choice_.pre_grasp = e.pre_grasp;
     choice_.q_grasp = e.q_grasp;
     choice_.q_pre_grasp = e.q_pre_grasp;

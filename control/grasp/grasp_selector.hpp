@@ -43,6 +43,7 @@ struct GraspChoice {
   int index = -1;               ///< into GraspSelector::candidates()
   Isometry grasp = Isometry::Identity();      ///< world grasp frame to track
   Isometry pre_grasp = Isometry::Identity();  ///< world pre-grasp frame
+  Isometry grasp_in_object = Isometry::Identity();  ///< the chosen candidate, fixed in the object frame
   Vector7 q_grasp = Vector7::Zero();          ///< rad, IK configuration at the grasp (posture reference)
   Vector7 q_pre_grasp = Vector7::Zero();      ///< rad, IK configuration at the pre-grasp
   ScoreTerms score;
@@ -57,7 +58,9 @@ class GraspSelector {
   GraspSelector(const Model& model, const std::vector<GraspSpec>& specs, const GraspSelectionConfig& config);
 
   /// One selection for the object at X_obj (world), the arm at q_now (rad) and
-  /// optional obstacle capsules (world). Real-time safe.
+  /// optional obstacle capsules (world). Real-time safe. A non-finite object
+  /// pose or configuration (a sensor dropout gone wrong) changes nothing and
+  /// returns the previous choice with `switched` false.
   const GraspChoice& update(const Isometry& X_obj, const Vector7& q_now, const ObstacleCapsule* obstacles = nullptr,
                             int num_obstacles = 0);
 

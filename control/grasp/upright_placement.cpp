@@ -15,7 +15,8 @@ Isometry uprightObjectPose(const Vector3& up_axis, double yaw, const Vector3& po
 }
 
 UprightPlacement findUprightPlacement(const Model& model, const HeldObject& held, const Vector3& position,
-                                      const Vector7& q_now, const GraspSelectionConfig& config) {
+                                      const Vector7& q_now, const GraspSelectionConfig& config,
+                                      const ObstacleCapsule* obstacles, int num_obstacles) {
   UprightPlacement best;
   const int frame = model.frameId(config.frame);
   const Isometry tcp_in_object = held.object_in_tcp.inverse();
@@ -38,7 +39,7 @@ UprightPlacement findUprightPlacement(const Model& model, const HeldObject& held
         const Vector3 up_world = (chainFramePose(model, poses, frame) * held.object_in_tcp).linear() * up;
         const double tilt = std::acos(std::clamp(up_world.z(), -1.0, 1.0));
         if (tilt > o.tilt_tolerance) continue;
-        const ScoreTerms t = scoreConfiguration(model, frame, poses, r.q, q_now, nullptr, 0, config.score);
+        const ScoreTerms t = scoreConfiguration(model, frame, poses, r.q, q_now, obstacles, num_obstacles, config.score);
         if (best.found && t.total <= best.score.total) continue;
         best.found = true;
         best.q = r.q;

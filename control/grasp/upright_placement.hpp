@@ -43,8 +43,10 @@ Isometry uprightObjectPose(const Vector3& up_axis, double yaw, const Vector3& po
 
 /// Searches an upright placement of `held` near `position` (world, m) for the
 /// arm at q_now (rad). `config` gives the frame, IK options and seeds, score
-/// weights and the upright options.
+/// weights and the upright options; optional obstacle capsules (world, e.g.
+/// the receiver's arm) enter the score's clearance term.
 UprightPlacement findUprightPlacement(const Model& model, const HeldObject& held, const Vector3& position,
-                                      const Vector7& q_now, const GraspSelectionConfig& config);
+                                      const Vector7& q_now, const GraspSelectionConfig& config,
+                                      const ObstacleCapsule* obstacles = nullptr, int num_obstacles = 0);
 
 }  // namespace handover::control::grasp

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "control/grasp/chain_kinematics.hpp"
 #include "control/grasp/grasp_selector.hpp"
@@ -228,6 +229,25 @@ TEST(GraspSelector, ReportsNoChoiceForAnObjectOutOfReach) {
   const GraspChoice& c = selector.update(bottleAt(Vector3(1.5, 0.0, 0.3)), testing::readyConfiguration());
   EXPECT_FALSE(c.valid);
   for (const CandidateEvaluation& e : selector.evaluations()) EXPECT_FALSE(e.feasible);
+}
+
+TEST(GraspSelector, NonFiniteInputKeepsTheChoice) {
+  const Model& model = testing::panda();
+  GraspSelector selector(model, {bottleSideGrasp()}, testing::shippedConfig());
+  const GraspChoice before = selector.update(bottleAt(Vector3(0.55, 0.0, 0.30)), testing::readyConfiguration());
+  ASSERT_TRUE(before.valid);
+  // the choice names its candidate in the object frame
+  EXPECT_LT((before.grasp_in_object.matrix() - selector.candidates()[before.index].in_object.matrix()).norm(), 1e-15);
+  Isometry bad = bottleAt(Vector3(0.55, 0.0, 0.30));
+  bad.translation().x() = std::numeric_limits<double>::quiet_NaN();
+  const GraspChoice& c = selector.update(bad, testing::readyConfiguration());
+  EXPECT_TRUE(c.valid);
+  EXPECT_EQ(c.index, before.index);
+  EXPECT_FALSE(c.switched);
+  EXPECT_TRUE(c.q_grasp.allFinite());
+  Vector7 q_bad = testing::readyConfiguration();
+  q_bad[2] = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(selector.update(bottleAt(Vector3(0.55, 0.0, 0.30)), q_bad).index, before.index);
 }
 
 TEST(GraspSelector, WarmUpdatesTrackAMovingObject) {

@@ -98,6 +98,25 @@ TEST(UprightPlacement, PresentationFarOutMovesInOrReportsNone) {
   EXPECT_FALSE(findUprightPlacement(model, side, Vector3(1.5, 0.0, 0.3), testing::readyConfiguration(), cfg).found);
 }
 
+TEST(UprightPlacement, KeepsTheArmAwayFromAnObstacle) {
+  // presentation to a receiver whose forearm lies where the best placement's elbow goes
+  const Model& model = testing::panda();
+  const GraspSelectionConfig& cfg = testing::shippedConfig();
+  const HeldObject side = heldBy(Eigen::AngleAxisd(M_PI / 2, Vector3::UnitY()).toRotationMatrix(), Vector3::Zero());
+  const Vector3 give(0.6, 0.0, 0.35);
+  const UprightPlacement free_best = findUprightPlacement(model, side, give, testing::readyConfiguration(), cfg);
+  ASSERT_TRUE(free_best.found);
+  ChainPoses poses;
+  chainPoses(model, free_best.q, poses);
+  const Vector3 elbow = poses.oMb[4].translation();
+  const ObstacleCapsule forearm{elbow + Vector3(-0.1, 0.0, 0.08), elbow + Vector3(0.1, 0.0, 0.08), 0.04};
+  const UprightPlacement p = findUprightPlacement(model, side, give, testing::readyConfiguration(), cfg, &forearm, 1);
+  expectUprightAt(model, side, p, give);
+  const double d_free = armClearance(model, poses, &forearm, 1);
+  chainPoses(model, p.q, poses);
+  EXPECT_GT(armClearance(model, poses, &forearm, 1), d_free + 0.02);
+}
+
 TEST(UprightPlacement, UprightPoseHasTheUpAxisAlongWorldZ) {
   for (const Vector3& up : {Vector3(0, 0, 1), Vector3(1, 0, 0), Vector3(0, -1, 0), Vector3(0, 0, -1), Vector3(1, 2, 3)}) {
     for (double yaw : {0.0, 1.0, -2.5}) {
