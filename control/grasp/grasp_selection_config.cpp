@@ -31,6 +31,7 @@ IkOptions readIk(const YamlReader& r, std::vector<Vector7>& seeds) {
   o.max_step = positive(r, "max_step", o.max_step, M_PI);
   o.limit_clearance = nonNegative(r, "limit_clearance", o.limit_clearance, 0.5);
   o.nullspace_gain = nonNegative(r, "nullspace_gain", o.nullspace_gain, 1.0);
+  o.nullspace_max_step = nonNegative(r, "nullspace_max_step", o.nullspace_max_step, M_PI);
   o.stall_ratio = nonNegative(r, "stall_ratio", o.stall_ratio, 1.0);
   if (auto c = r.optionalChild("stall_window")) o.stall_window = static_cast<int>(c->checkRange(c->asInt(), 1, 1000));
   if (auto c = r.optionalChild("seeds")) {

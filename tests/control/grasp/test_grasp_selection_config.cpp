@@ -41,7 +41,8 @@ TEST(GraspSelectionConfig, ShippedFileLoadsWithSeedsInsideTheLimits) {
 TEST(GraspSelectionConfig, ReadsEveryGroup) {
   const GraspSelectionConfig c = fromText(R"(
 frame: hand
-ik: {max_iterations: 12, position_tolerance: 2.0e-4, orientation_tolerance_deg: 0.1, seeds: [[0, 0, 0, -1, 0, 1, 0]]}
+ik: {max_iterations: 12, position_tolerance: 2.0e-4, orientation_tolerance_deg: 0.1, nullspace_max_step: 0.02,
+     seeds: [[0, 0, 0, -1, 0, 1, 0]]}
 candidates: {free_axis_step_deg: 45, parallel_gripper_twin: false, pre_grasp_standoff: 0.05}
 score: {joint_margin: 3.0, margin_ref: 0.4, motion: 0.0}
 hysteresis: 0.3
@@ -53,6 +54,7 @@ upright: {yaw_step_deg: 20, tilt_tolerance_deg: 5, position_offsets: [[0, 0, 0],
   EXPECT_EQ(c.ik.max_iterations, 12);
   EXPECT_DOUBLE_EQ(c.ik.position_tolerance, 2.0e-4);
   EXPECT_NEAR(c.ik.orientation_tolerance, 0.1 * M_PI / 180.0, 1e-15);
+  EXPECT_DOUBLE_EQ(c.ik.nullspace_max_step, 0.02);
   ASSERT_EQ(c.seeds.size(), 1u);
   EXPECT_DOUBLE_EQ(c.seeds[0][3], -1.0);
   EXPECT_NEAR(c.candidates.free_axis_step, M_PI / 4, 1e-12);
