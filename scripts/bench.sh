@@ -43,6 +43,8 @@ target_us() {
     BM_StepWaiting|BM_StepGrasping) echo 10 ;;
     BM_ScriptedHumanStep|BM_SensorObservePoll|BM_EstimatorAndTarget) echo 5 ;;
     BM_DecodeDatagram) echo 20 ;;
+    BM_IkWarm) echo 20 ;;
+    BM_SelectionMovingObject) echo 500 ;;
     *) echo "" ;;
   esac
 }

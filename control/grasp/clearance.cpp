@@ -1,0 +1,58 @@
+#include "control/grasp/clearance.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace handover::control::grasp {
+
+double segmentDistance(const Vector3& p0, const Vector3& p1, const Vector3& q0, const Vector3& q1) {
+  // minimise |p0 + s u - (q0 + t v)| over s, t in [0, 1]
+  const Vector3 u = p1 - p0, v = q1 - q0, w = p0 - q0;
+  const double a = u.dot(u), b = u.dot(v), c = v.dot(v), d = u.dot(w), e = v.dot(w);
+  constexpr double kTiny = 1e-14;
+  double s = 0.0, t = 0.0;
+  if (a < kTiny && c < kTiny) return w.norm();  // two points
+  if (a < kTiny) {
+    t = std::clamp(e / c, 0.0, 1.0);
+  } else if (c < kTiny) {
+    s = std::clamp(-d / a, 0.0, 1.0);
+  } else {
+    const double den = a * c - b * b;  // 0 for parallel segments: any s works, start at 0
+    s = den > kTiny ? std::clamp((b * e - c * d) / den, 0.0, 1.0) : 0.0;
+    // best t for that s, then the best s for a clamped t
+    t = (b * s + e) / c;
+    if (t < 0.0) {
+      t = 0.0;
+      s = std::clamp(-d / a, 0.0, 1.0);
+    } else if (t > 1.0) {
+      t = 1.0;
+      s = std::clamp((b - d) / a, 0.0, 1.0);
+    }
+  }
+  return (w + s * u - t * v).norm();
+}
+
+double armClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles, int num_obstacles) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const Capsule& c : model.capsules) {
+    const Isometry& X = poses.oMb[c.body];
+    const Vector3 a = X * c.a, b = X * c.b;
+    for (int k = 0; k < num_obstacles; ++k) {
+      const ObstacleCapsule& o = obstacles[k];
+      best = std::min(best, segmentDistance(a, b, o.a, o.b) - c.radius - o.radius);
+    }
+  }
+  return best;
+}
+
+double lowestArmPoint(const Model& model, const ChainPoses& poses, int first_body) {
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const Capsule& c : model.capsules) {
+    if (c.body < first_body) continue;
+    const Isometry& X = poses.oMb[c.body];
+    lowest = std::min(lowest, std::min((X * c.a).z(), (X * c.b).z()) - c.radius);
+  }
+  return lowest;
+}
+
+}  // namespace handover::control::grasp

@@ -1,0 +1,31 @@
+// Clearance between the arm's collision capsules and obstacle capsules given
+// by the caller (e.g. the person's forearm and hand from perception), and
+// from the table top, for scoring and filtering configurations. Analytic segment-segment distance; no FCL here
+// (this runs over every candidate, and no witness points are needed).
+// Frames: world. Units: m. Real-time safe.
+#pragma once
+
+#include "control/grasp/chain_kinematics.hpp"
+
+namespace handover::control::grasp {
+
+/// A capsule in the world: the segment [a, b] swept by a sphere of `radius`.
+struct ObstacleCapsule {
+  Vector3 a = Vector3::Zero();  ///< m, world
+  Vector3 b = Vector3::Zero();  ///< m, world
+  double radius = 0.0;          ///< m
+};
+
+/// Smallest distance between the segments [p0, p1] and [q0, q1] (m).
+double segmentDistance(const Vector3& p0, const Vector3& p1, const Vector3& q0, const Vector3& q1);
+
+/// Smallest surface distance between any of the model's capsules posed by
+/// `poses` and any obstacle (m, negative when they overlap); +infinity
+/// without obstacles.
+double armClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles, int num_obstacles);
+
+/// Lowest point (world z, m) of the capsules of bodies `first_body`.. (the
+/// base and link 1 stand on the table and are left out with first_body = 2).
+double lowestArmPoint(const Model& model, const ChainPoses& poses, int first_body = 2);
+
+}  // namespace handover::control::grasp

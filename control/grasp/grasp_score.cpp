@@ -1,0 +1,44 @@
+#include "control/grasp/grasp_score.hpp"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+
+namespace handover::control::grasp {
+
+double smallestLimitDistance(const Model& model, const Vector7& q) {
+  return std::min((q - model.q_min).minCoeff(), (model.q_max - q).minCoeff());
+}
+
+double manipulability(const Matrix6x7& J) {
+  const Matrix6 JJt = J * J.transpose();
+  // det of a symmetric positive semi-definite matrix from its LDL' pivots
+  const Eigen::LDLT<Matrix6> ldlt(JJt);
+  double det = 1.0;
+  for (int i = 0; i < 6; ++i) det *= std::max(0.0, ldlt.vectorD()[i]);
+  return std::sqrt(det);
+}
+
+ScoreTerms scoreConfiguration(const Model& model, int frame_id, const ChainPoses& poses, const Vector7& q,
+                              const Vector7& q_now, const ObstacleCapsule* obstacles, int num_obstacles,
+                              const ScoreWeights& w) {
+  ScoreTerms t;
+  t.joint_margin = std::clamp(smallestLimitDistance(model, q) / w.margin_ref, 0.0, 1.0);
+  Matrix6x7 J;
+  chainFrameJacobian(model, poses, frame_id, J);
+  t.manipulability = std::min(1.0, manipulability(J) / w.manipulability_ref);
+  t.motion = (q - q_now).norm() / w.motion_ref;
+  if (num_obstacles > 0) {
+    const double d = armClearance(model, poses, obstacles, num_obstacles);
+    t.clearance = std::clamp(1.0 - d / w.clearance_ref, 0.0, 1.0);
+  }
+  t.total = totalScore(t, w);
+  return t;
+}
+
+double totalScore(const ScoreTerms& t, const ScoreWeights& w) {
+  return w.joint_margin * t.joint_margin + w.manipulability * t.manipulability - w.motion * t.motion -
+         w.clearance * t.clearance;
+}
+
+}  // namespace handover::control::grasp

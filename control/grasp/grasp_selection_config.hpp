@@ -1,0 +1,48 @@
+// Settings of grasp selection and upright placement, from
+// config/grasp_selection.yaml (strict: unknown keys and out-of-range values
+// are InputErrors naming the file, key and line). Start-up only.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "config/yaml_reader.hpp"
+#include "control/grasp/grasp_candidates.hpp"
+#include "control/grasp/grasp_score.hpp"
+#include "control/grasp/inverse_kinematics.hpp"
+
+namespace handover::control::grasp {
+
+/// Upright stow / presentation search (upright_placement.hpp).
+struct UprightOptions {
+  double yaw_step = 30.0 * M_PI / 180.0;      ///< rad, spacing of the turns about world z
+  double tilt_tolerance = 10.0 * M_PI / 180.0;///< rad, largest angle between the object's up axis and world z
+  std::vector<Vector3> position_offsets{Vector3::Zero()};  ///< m, tried in order around the nominal position
+};
+
+struct GraspSelectionConfig {
+  std::string frame = "tcp";          ///< model frame that meets the grasp frame
+  IkOptions ik;
+  std::vector<Vector7> seeds;         ///< rad, fixed IK seeds tried after the current q on a cold start
+  CandidateOptions candidates;
+  ScoreWeights score;
+  /// The table top (world z, m): a configuration whose arm capsules (link 2
+  /// onward) dip below table_height + table_clearance is not reachable.
+  double table_height = 0.0;
+  double table_clearance = 0.02;
+  double hysteresis = 0.15;           ///< score units another candidate must gain to replace the current choice
+  /// IK solves from one fixed seed spent per update on candidates without a
+  /// warm start (unreachable so far, or lost), round-robin; bounds the cost of
+  /// candidates that stay out of reach. 0 = every seed for every such
+  /// candidate in every update. While no candidate has a solution yet, all
+  /// seeds are tried regardless.
+  int cold_solves_per_update = 2;
+  UprightOptions upright;
+};
+
+/// Reads and validates a config file (see config/grasp_selection.yaml for every key).
+GraspSelectionConfig loadGraspSelectionConfig(const std::string& path);
+/// Same from an already loaded document (tests, overrides).
+GraspSelectionConfig graspSelectionConfigFrom(const YamlReader& root);
+
+}  // namespace handover::control::grasp

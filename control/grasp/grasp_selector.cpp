@@ -1,0 +1,153 @@
+#include "control/grasp/grasp_selector.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace handover::control::grasp {
+
+GraspSelector::GraspSelector(const Model& model, const std::vector<GraspSpec>& specs,
+                             const GraspSelectionConfig& config)
+    : model_(model), config_(config), frame_(model.frameId(config.frame)) {
+  if (specs.empty()) throw std::invalid_argument("GraspSelector: the object declares no grasp");
+  candidates_ = enumerateGraspCandidates(specs, config.candidates);
+  evaluations_.resize(candidates_.size());
+  warm_.assign(candidates_.size(), false);
+  next_seed_.assign(candidates_.size(), 0);
+  seeds_.reserve(config.seeds.size() + 1);
+  seeds_.push_back(Vector7::Zero());
+  seeds_.insert(seeds_.end(), config.seeds.begin(), config.seeds.end());
+}
+
+void GraspSelector::reset() {
+  std::fill(warm_.begin(), warm_.end(), false);
+  std::fill(next_seed_.begin(), next_seed_.end(), 0);
+  for (CandidateEvaluation& e : evaluations_) e = CandidateEvaluation();
+  choice_ = GraspChoice();
+  cold_cursor_ = 0;
+}
+
+bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, const Vector7& seed,
+                              const Vector7& q_now, const ObstacleCapsule* obstacles, int num_obstacles,
+                              CandidateEvaluation& out) {
+  const IkResult g = solveIk(model_, frame_, grasp, seed, config_.ik);
+  out.iterations += g.iterations;
+  if (!g.converged) return false;
+  // the pre-grasp lies a few cm back: its solution is next to the grasp's
+  const IkResult p = solveIk(model_, frame_, pre_grasp, g.q, config_.ik);
+  out.iterations += p.iterations;
+  if (!p.converged) return false;
+
+  ChainPoses poses;
+  chainPoses(model_, p.q, poses);
+  const double floor = config_.table_height + config_.table_clearance;
+  if (lowestArmPoint(model_, poses) < floor) return false;
+  const ScoreTerms pre = scoreConfiguration(model_, frame_, poses, p.q, q_now, obstacles, num_obstacles, config_.score);
+  chainPoses(model_, g.q, poses);
+  if (lowestArmPoint(model_, poses) < floor) return false;
+  ScoreTerms t = scoreConfiguration(model_, frame_, poses, g.q, q_now, obstacles, num_obstacles, config_.score);
+  // the arm must pass the pre-grasp too: the worse margin and clearance count
+  t.joint_margin = std::min(t.joint_margin, pre.joint_margin);
+  t.clearance = std::max(t.clearance, pre.clearance);
+  t.total = totalScore(t, config_.score);
+  out.q_grasp = g.q;
+  out.q_pre_grasp = p.q;
+  out.score = t;
+  return true;
+}
+
+void GraspSelector::evaluate(int k, const Isometry& X_obj, const Vector7& q_now, const ObstacleCapsule* obstacles,
+                             int num_obstacles, Start start) {
+  CandidateEvaluation& e = evaluations_[k];
+  e.evaluated = true;
+  e.iterations = 0;
+  e.grasp = graspInWorld(X_obj, candidates_[k]);
+  e.pre_grasp = preGraspOf(e.grasp, config_.candidates.pre_grasp_standoff);
+
+  if (start == Start::kWarm || start == Start::kNextSeed) {
+    int& next = next_seed_[k];
+    const Vector7 seed = start == Start::kWarm ? e.q_grasp : seeds_[next];
+    if (start == Start::kNextSeed) next = (next + 1) % static_cast<int>(seeds_.size());
+    e.feasible = solvePair(e.grasp, e.pre_grasp, seed, q_now, obstacles, num_obstacles, e);
+    warm_[k] = e.feasible;
+    return;
+  }
+  // every seed, keep the best-scoring solution
+  CandidateEvaluation trial;
+  e.feasible = false;
+  for (const Vector7& seed : seeds_) {
+    trial.iterations = 0;
+    const bool ok = solvePair(e.grasp, e.pre_grasp, seed, q_now, obstacles, num_obstacles, trial);
+    e.iterations += trial.iterations;
+    if (ok && (!e.feasible || trial.score.total > e.score.total)) {
+      e.feasible = true;
+      e.q_grasp = trial.q_grasp;
+      e.q_pre_grasp = trial.q_pre_grasp;
+      e.score = trial.score;
+    }
+  }
+  warm_[k] = e.feasible;
+}
+
+const GraspChoice& GraspSelector::update(const Isometry& X_obj, const Vector7& q_now, const ObstacleCapsule* obstacles,
+                                         int num_obstacles) {
+  if (!X_obj.matrix().allFinite() || !q_now.allFinite()) {
+    choice_.switched = false;
+    return choice_;
+  }
+  seeds_[0] = q_now;
+  const int n = static_cast<int>(candidates_.size());
+  // Warm candidates every time. The others (unreachable so far, or lost):
+  // from every seed while nothing is reachable yet (a new object) or when the
+  // budget is 0; else one seed each, round-robin over candidates and seeds,
+  // at most `cold_solves_per_update` of them.
+  const bool any_warm = std::find(warm_.begin(), warm_.end(), true) != warm_.end();
+  const bool all_seeds = !any_warm || config_.cold_solves_per_update == 0;
+  int cold_done = 0, last_cold = -1;
+  for (int i = 0; i < n; ++i) {
+    const int k = (cold_cursor_ + i) % n;
+    if (warm_[k]) {
+      evaluate(k, X_obj, q_now, obstacles, num_obstacles, Start::kWarm);
+      if (warm_[k]) continue;  // a failed warm solve falls through to a cold one
+    }
+    if (all_seeds) {
+      evaluate(k, X_obj, q_now, obstacles, num_obstacles, Start::kAllSeeds);
+    } else if (cold_done < config_.cold_solves_per_update) {
+      evaluate(k, X_obj, q_now, obstacles, num_obstacles, Start::kNextSeed);
+      ++cold_done;
+      last_cold = k;
+    } else {
+      evaluations_[k].evaluated = false;
+      evaluations_[k].feasible = false;
+      evaluations_[k].iterations = 0;
+    }
+  }
+  // the next update's cold solves start after the last one of this update
+  if (last_cold >= 0) cold_cursor_ = (last_cold + 1) % n;
+
+  // best feasible candidate; the current one keeps its place unless beaten by the margin
+  int best = -1;
+  for (int k = 0; k < n; ++k) {
+    if (evaluations_[k].feasible && (best < 0 || evaluations_[k].score.total > evaluations_[best].score.total)) best = k;
+  }
+  const int current = choice_.valid ? choice_.index : -1;
+  int pick = best;
+  if (current >= 0 && evaluations_[current].feasible &&
+      evaluations_[best].score.total <= evaluations_[current].score.total + config_.hysteresis) {
+    pick = current;
+  }
+  choice_.switched = pick != current;
+  choice_.valid = pick >= 0;
+  choice_.index = pick;
+  if (pick >= 0) {
+    const CandidateEvaluation& e = evaluations_[pick];
+    choice_.grasp = e.grasp;
+    choice_.grasp_in_object = candidates_[pick].in_object;
+    choice_.pre_grasp = e.pre_grasp;
+    choice_.q_grasp = e.q_grasp;
+    choice_.q_pre_grasp = e.q_pre_grasp;
+    choice_.score = e.score;
+  }
+  return choice_;
+}
+
+}  // namespace handover::control::grasp

@@ -1,0 +1,43 @@
+// Shared helpers of the grasp tests: the Panda model from scenes/panda.urdf
+// and random configurations inside its limits.
+#pragma once
+
+#include <random>
+#include <string>
+
+#include "control/grasp/grasp_selection_config.hpp"
+#include "control/model/model.hpp"
+
+namespace handover::control::grasp::testing {
+
+inline const Model& panda() {
+  static const Model model = loadModel(std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf");
+  return model;
+}
+
+/// Uniform in [q_min + inset, q_max - inset] (rad).
+inline Vector7 randomConfiguration(const Model& model, std::mt19937& rng, double inset = 0.0) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Vector7 q;
+  for (int i = 0; i < kArmDofs; ++i) {
+    const double lo = model.q_min[i] + inset, hi = model.q_max[i] - inset;
+    q[i] = lo + u(rng) * (hi - lo);
+  }
+  return q;
+}
+
+/// The "ready" pose of the facts sheet (rad).
+inline Vector7 readyConfiguration() {
+  Vector7 q;
+  q << 0.0, -0.785398, 0.0, -2.356194, 0.0, 1.570796, 0.785398;
+  return q;
+}
+
+/// The shipped config/grasp_selection.yaml.
+inline const GraspSelectionConfig& shippedConfig() {
+  static const GraspSelectionConfig config =
+      loadGraspSelectionConfig(std::string(HANDOVER_SOURCE_DIR) + "/config/grasp_selection.yaml");
+  return config;
+}
+
+}  // namespace handover::control::grasp::testing

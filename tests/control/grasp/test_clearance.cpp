@@ -1,0 +1,83 @@
+// Segment distances against a dense sampling, and the arm's clearance to an
+// obstacle capsule against the distance from its posed capsules.
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "control/grasp/clearance.hpp"
+#include "control/grasp/grasp_score.hpp"
+#include "tests/control/grasp/panda_fixture.hpp"
+
+namespace handover::control::grasp {
+namespace {
+
+// brute force over a grid of both segments' parameters
+double sampledDistance(const Vector3& p0, const Vector3& p1, const Vector3& q0, const Vector3& q1) {
+  double best = std::numeric_limits<double>::infinity();
+  const int n = 400;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      best = std::min(best, ((p0 + (p1 - p0) * i / n) - (q0 + (q1 - q0) * j / n)).norm());
+  return best;
+}
+
+TEST(Clearance, SegmentDistanceMatchesSampling) {
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-0.5, 0.5);
+  auto point = [&] { return Vector3(u(rng), u(rng), u(rng)); };
+  for (int k = 0; k < 30; ++k) {
+    const Vector3 p0 = point(), p1 = point(), q0 = point(), q1 = point();
+    EXPECT_NEAR(segmentDistance(p0, p1, q0, q1), sampledDistance(p0, p1, q0, q1), 3e-3);
+    EXPECT_LE(segmentDistance(p0, p1, q0, q1), sampledDistance(p0, p1, q0, q1) + 1e-12);
+  }
+  // parallel, overlapping, degenerate and crossing cases
+  EXPECT_NEAR(segmentDistance({0, 0, 0}, {1, 0, 0}, {0.5, 0.2, 0}, {1.5, 0.2, 0}), 0.2, 1e-12);
+  EXPECT_NEAR(segmentDistance({0, 0, 0}, {1, 0, 0}, {2, 0.1, 0}, {3, 0.1, 0}), std::hypot(1.0, 0.1), 1e-12);
+  EXPECT_NEAR(segmentDistance({0, 0, 0}, {0, 0, 0}, {1, -1, 0.3}, {1, 1, 0.3}), std::hypot(1.0, 0.3), 1e-12);
+  EXPECT_NEAR(segmentDistance({-1, 0, 0}, {1, 0, 0}, {0, -1, 0.05}, {0, 1, 0.05}), 0.05, 1e-12);
+}
+
+TEST(Clearance, ArmClearanceIsTheNearestCapsuleSurface) {
+  const Model& model = testing::panda();
+  ChainPoses poses;
+  chainPoses(model, testing::readyConfiguration(), poses);
+  EXPECT_EQ(armClearance(model, poses, nullptr, 0), std::numeric_limits<double>::infinity());
+  // a forearm-like capsule above the TCP, crossing the hand's x axis
+  const Isometry tcp = chainFramePose(model, poses, model.frameId("tcp"));
+  ObstacleCapsule o{tcp.translation() + Vector3(0.3, -0.2, 0.5), tcp.translation() + Vector3(0.3, 0.2, 0.5), 0.04};
+  double expected = std::numeric_limits<double>::infinity();
+  for (const Capsule& c : model.capsules) {
+    const Vector3 a = poses.oMb[c.body] * c.a, b = poses.oMb[c.body] * c.b;
+    expected = std::min(expected, sampledDistance(a, b, o.a, o.b) - c.radius - o.radius);
+  }
+  EXPECT_NEAR(armClearance(model, poses, &o, 1), expected, 3e-3);
+  // and the score penalises it only inside clearance_ref
+  ScoreWeights w;
+  w.clearance_ref = expected + 0.1;
+  ScoreTerms near = scoreConfiguration(model, model.frameId("tcp"), poses, testing::readyConfiguration(),
+                                       testing::readyConfiguration(), &o, 1, w);
+  EXPECT_GT(near.clearance, 0.0);
+  w.clearance_ref = expected - 0.01;
+  ScoreTerms far = scoreConfiguration(model, model.frameId("tcp"), poses, testing::readyConfiguration(),
+                                      testing::readyConfiguration(), &o, 1, w);
+  EXPECT_EQ(far.clearance, 0.0);
+  EXPECT_GT(far.total, near.total);
+}
+
+TEST(Scores, ManipulabilityVanishesAtTheStretchedSingularity) {
+  const Model& model = testing::panda();
+  ChainPoses poses;
+  Matrix6x7 J;
+  chainPoses(model, Vector7::Zero(), poses);  // arm straight up: a singular pose
+  chainFrameJacobian(model, poses, model.frameId("tcp"), J);
+  const double singular = manipulability(J);
+  chainPoses(model, testing::readyConfiguration(), poses);
+  chainFrameJacobian(model, poses, model.frameId("tcp"), J);
+  const double ready = manipulability(J);
+  EXPECT_LT(singular, 1e-6);
+  EXPECT_GT(ready, 0.03);
+  EXPECT_NEAR(ready, std::sqrt((J * J.transpose()).determinant()), 1e-9);
+}
+
+}  // namespace
+}  // namespace handover::control::grasp

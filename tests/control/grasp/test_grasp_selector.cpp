@@ -1,0 +1,272 @@
+// Grasp selection: the side grasp of the issue is reachable away from every
+// limit, larger joint margins win, and hysteresis holds the choice under
+// small perturbations but not under large ones.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "control/grasp/chain_kinematics.hpp"
+#include "control/grasp/grasp_selector.hpp"
+#include "tests/control/grasp/panda_fixture.hpp"
+
+namespace handover::control::grasp {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+Isometry tcpPose(const Model& model, const Vector7& q) {
+  ChainPoses poses;
+  chainPoses(model, q, poses);
+  return chainFramePose(model, poses, model.frameId("tcp"));
+}
+
+double rotationAngle(const Matrix3& a, const Matrix3& b) { return Eigen::AngleAxisd(a * b.transpose()).angle(); }
+
+// issue 12's first case: an upright bottle in front of the robot, taken from the side
+GraspSpec bottleSideGrasp() {
+  GraspSpec s;
+  s.placement.linear() = Eigen::AngleAxisd(M_PI / 2, Vector3::UnitY()).toRotationMatrix();
+  s.has_free_axis = true;
+  s.free_axis = Vector3::UnitZ();
+  return s;
+}
+
+Isometry bottleAt(const Vector3& p) {
+  Isometry X = Isometry::Identity();
+  X.translation() = p;
+  return X;
+}
+
+TEST(GraspSelector, SideGraspOfAnUprightBottleStaysAwayFromEveryLimit) {
+  const Model& model = testing::panda();
+  GraspSelector selector(model, {bottleSideGrasp()}, testing::shippedConfig());
+  const Isometry X_obj = bottleAt(Vector3(0.55, 0.0, 0.30));
+  const GraspChoice& c = selector.update(X_obj, testing::readyConfiguration());
+  ASSERT_TRUE(c.valid);
+  EXPECT_GE(smallestLimitDistance(model, c.q_grasp), 0.2);
+  EXPECT_GE(smallestLimitDistance(model, c.q_pre_grasp), 0.2);
+  // the configurations reach the frames they claim
+  const Isometry X_g = tcpPose(model, c.q_grasp), X_p = tcpPose(model, c.q_pre_grasp);
+  EXPECT_LT((X_g.translation() - c.grasp.translation()).norm(), 1e-3);
+  EXPECT_LT(rotationAngle(X_g.linear(), c.grasp.linear()), 0.5 * kDeg);
+  EXPECT_LT((X_p.translation() - c.pre_grasp.translation()).norm(), 1e-3);
+  EXPECT_LT(rotationAngle(X_p.linear(), c.pre_grasp.linear()), 0.5 * kDeg);
+  // it is one of the admissible grasps: horizontal approach, fingers across the axis
+  EXPECT_NEAR(c.grasp.linear().col(2).z(), 0.0, 1e-9);
+  EXPECT_NEAR(c.grasp.linear().col(1).z(), 0.0, 1e-9);
+  // the best is no worse than any other reachable candidate (hysteresis is moot on the first update)
+  for (const CandidateEvaluation& e : selector.evaluations()) {
+    if (e.feasible) {
+      EXPECT_LE(e.score.total, c.score.total + 1e-12);
+    }
+  }
+}
+
+TEST(GraspSelector, SideAndFortyFiveDegreeGraspsOverTheHandoverRegion) {
+  // where people offer objects: 0.4-0.7 m in front, 0.5 m wide, 0.2-0.4 m above the table
+  const Model& model = testing::panda();
+  for (double elevation : {0.0, M_PI / 4}) {
+    GraspSpec s = bottleSideGrasp();
+    s.placement.linear() = Eigen::AngleAxisd(M_PI / 2 + elevation, Vector3::UnitY()).toRotationMatrix();
+    GraspSelector selector(model, {s}, testing::shippedConfig());
+    for (double x : {0.4, 0.55, 0.7})
+      for (double y : {-0.25, 0.0, 0.25})
+        for (double z : {0.2, 0.4}) {
+          selector.reset();
+          const GraspChoice& c = selector.update(bottleAt(Vector3(x, y, z)), testing::readyConfiguration());
+          ASSERT_TRUE(c.valid) << x << " " << y << " " << z;
+          EXPECT_GE(smallestLimitDistance(model, c.q_grasp), 0.2) << x << " " << y << " " << z;
+          EXPECT_GE(smallestLimitDistance(model, c.q_pre_grasp), 0.2) << x << " " << y << " " << z;
+        }
+  }
+}
+
+TEST(GraspSelector, FortyFiveDegreeGraspOfABottleIsReachable) {
+  const Model& model = testing::panda();
+  GraspSpec s = bottleSideGrasp();
+  s.placement.linear() = Eigen::AngleAxisd(3 * M_PI / 4, Vector3::UnitY()).toRotationMatrix();  // 45 deg from above
+  GraspSelector selector(model, {s}, testing::shippedConfig());
+  const GraspChoice& c = selector.update(bottleAt(Vector3(0.55, 0.0, 0.30)), testing::readyConfiguration());
+  ASSERT_TRUE(c.valid);
+  EXPECT_NEAR(c.grasp.linear().col(2).z(), -std::sqrt(0.5), 1e-9);
+  EXPECT_GE(smallestLimitDistance(model, c.q_grasp), 0.2);
+  EXPECT_GE(smallestLimitDistance(model, c.q_pre_grasp), 0.2);
+}
+
+TEST(GraspSelector, LongObjectPointingAtTheRobotIsNotTakenFromBelowTheTable) {
+  // issue 12: a long object carried horizontally, pointing at the robot, low
+  // over the table; the grasp closes across its axis from any side around it
+  const Model& model = testing::panda();
+  GraspSpec across;
+  across.placement.linear() = Eigen::AngleAxisd(-M_PI / 2, Vector3::UnitY()).toRotationMatrix();
+  across.has_free_axis = true;
+  Isometry X_obj = Isometry::Identity();
+  X_obj.linear() = Eigen::AngleAxisd(-M_PI / 2, Vector3::UnitY()).toRotationMatrix();  // object z along world -x
+  X_obj.translation() = Vector3(0.5, 0.0, 0.20);  // low enough that the hand would reach into the table from below
+  GraspSelector selector(model, {across}, testing::shippedConfig());
+  const GraspChoice& c = selector.update(X_obj, testing::readyConfiguration());
+  ASSERT_TRUE(c.valid);
+  EXPECT_LT(c.grasp.linear().col(2).z(), 0.5);  // not coming up from below
+  EXPECT_GE(smallestLimitDistance(model, c.q_grasp), 0.2);
+  // every candidate that comes from below is out: its hand would be in the table
+  int from_below = 0;
+  for (const CandidateEvaluation& e : selector.evaluations()) {
+    if (e.grasp.linear().col(2).z() > 0.9) {
+      ++from_below;
+      EXPECT_FALSE(e.feasible);
+    }
+  }
+  EXPECT_GT(from_below, 0);
+  // and the arm of the chosen configurations stays above it
+  ChainPoses poses;
+  chainPoses(model, c.q_grasp, poses);
+  EXPECT_GE(lowestArmPoint(model, poses), testing::shippedConfig().table_clearance);
+  chainPoses(model, c.q_pre_grasp, poses);
+  EXPECT_GE(lowestArmPoint(model, poses), testing::shippedConfig().table_clearance);
+}
+
+TEST(GraspSelector, PrefersTheCandidateWithLargerJointMargins) {
+  // two declared grasps, both reachable: A only with the elbow folded to
+  // 0.12 rad from its limit (the elbow angle follows from the shoulder-wrist
+  // distance, so no redundancy helps), B at the ready pose. The arm sits at A,
+  // so motion favours A; the joint margin must still win.
+  const Model& model = testing::panda();
+  Vector7 q_a = testing::readyConfiguration();
+  q_a[3] = model.q_min[3] + 0.12;
+  GraspSpec a, b;
+  a.placement = tcpPose(model, q_a);  // object frame = world
+  b.placement = tcpPose(model, testing::readyConfiguration());
+  GraspSelectionConfig cfg = testing::shippedConfig();
+  cfg.candidates.parallel_gripper_twin = false;
+  GraspSelector selector(model, {a, b}, cfg);
+  const GraspChoice& c = selector.update(Isometry::Identity(), q_a);
+  ASSERT_TRUE(c.valid);
+  const CandidateEvaluation& ea = selector.evaluations()[0];
+  ASSERT_TRUE(ea.feasible);  // a real choice
+  EXPECT_LT(smallestLimitDistance(model, ea.q_grasp), 0.25);  // the premise: A stays folded
+  EXPECT_EQ(c.index, 1);
+  EXPECT_GT(c.score.joint_margin, ea.score.joint_margin);
+  EXPECT_LT(ea.score.motion, c.score.motion);
+}
+
+// turns the object about the approach axis of `grasp` (world) through the grasp point
+Isometry turnedAboutApproach(const Isometry& grasp, double angle) {
+  const Vector3 p = grasp.translation();
+  return Eigen::Translation3d(p) * Eigen::AngleAxisd(angle, grasp.linear().col(2)) * Eigen::Translation3d(-p);
+}
+
+TEST(GraspSelector, HysteresisHoldsUnderSmallPerturbationsAndSwitchesUnderLargeOnes) {
+  // a top grasp and its twin; the object turns about the approach axis, which
+  // turns the wrist (joint 7) of both. At a quarter turn both need the same
+  // wrist motion from the ready pose: their scores cross there.
+  const Model& model = testing::panda();
+  GraspSpec top;
+  top.placement = tcpPose(model, testing::readyConfiguration());
+  GraspSelector selector(model, {top}, testing::shippedConfig());
+  const Vector7 q_now = testing::readyConfiguration();
+  const GraspChoice& first = selector.update(Isometry::Identity(), q_now);
+  ASSERT_TRUE(first.valid);
+  const int chosen = first.index;
+  EXPECT_FALSE(selector.candidates()[chosen].twin);  // no motion needed: the obvious one
+  const int other = 1 - chosen;
+
+  // the object turns slowly toward the crossing
+  for (double angle = 0.0; angle < M_PI / 2 - 0.06; angle += 0.05) {
+    ASSERT_EQ(selector.update(turnedAboutApproach(top.placement, angle), q_now).index, chosen);
+  }
+  // then jitters across it (sensor noise, 5 mm and 3 degrees)
+  std::mt19937 rng(2);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int other_ahead = 0;
+  for (int k = 0; k < 40; ++k) {
+    Isometry X_obj = turnedAboutApproach(top.placement, M_PI / 2 + 0.05 * u(rng));
+    X_obj.translation() += 0.005 * Vector3(u(rng), u(rng), u(rng));
+    const GraspChoice& c = selector.update(X_obj, q_now);
+    ASSERT_TRUE(c.valid);
+    EXPECT_EQ(c.index, chosen) << "update " << k;
+    EXPECT_FALSE(c.switched);
+    if (selector.evaluations()[other].score.total > selector.evaluations()[chosen].score.total) ++other_ahead;
+  }
+  // the premise: without hysteresis the choice would have flickered
+  EXPECT_GT(other_ahead, 0);
+  EXPECT_LT(other_ahead, 40);
+
+  // a large turn takes the chosen grasp's wrist toward its limit: the twin wins
+  const GraspChoice& c = selector.update(turnedAboutApproach(top.placement, 2.3), q_now);
+  ASSERT_TRUE(c.valid);
+  EXPECT_EQ(c.index, other);
+  EXPECT_TRUE(c.switched);
+  EXPECT_GT(smallestLimitDistance(model, c.q_grasp), 0.4);
+}
+
+TEST(GraspSelector, AvoidsAnObstacleNearTheBestGraspConfiguration) {
+  const Model& model = testing::panda();
+  GraspSelector selector(model, {bottleSideGrasp()}, testing::shippedConfig());
+  const Isometry X_obj = bottleAt(Vector3(0.55, 0.0, 0.30));
+  const Vector7 q_now = testing::readyConfiguration();
+  const GraspChoice free_choice = selector.update(X_obj, q_now);
+  ASSERT_TRUE(free_choice.valid);
+  // a forearm-sized capsule 5 cm above the elbow (joint 4, body 4) of that configuration
+  ChainPoses poses;
+  chainPoses(model, free_choice.q_grasp, poses);
+  const Vector3 elbow = poses.oMb[4].translation();
+  ObstacleCapsule forearm{elbow + Vector3(-0.1, 0.0, 0.1), elbow + Vector3(0.1, 0.0, 0.1), 0.04};
+  selector.reset();
+  const GraspChoice& c = selector.update(X_obj, q_now, &forearm, 1);
+  ASSERT_TRUE(c.valid);
+  chainPoses(model, c.q_grasp, poses);
+  const double d_new = armClearance(model, poses, &forearm, 1);
+  chainPoses(model, free_choice.q_grasp, poses);
+  const double d_old = armClearance(model, poses, &forearm, 1);
+  EXPECT_GT(d_new, d_old + 0.02);
+  EXPECT_GT(c.score.total, totalScore(free_choice.score, testing::shippedConfig().score) - 1.0);
+}
+
+TEST(GraspSelector, ReportsNoChoiceForAnObjectOutOfReach) {
+  const Model& model = testing::panda();
+  GraspSelector selector(model, {bottleSideGrasp()}, testing::shippedConfig());
+  const GraspChoice& c = selector.update(bottleAt(Vector3(1.5, 0.0, 0.3)), testing::readyConfiguration());
+  EXPECT_FALSE(c.valid);
+  for (const CandidateEvaluation& e : selector.evaluations()) EXPECT_FALSE(e.feasible);
+}
+
+TEST(GraspSelector, NonFiniteInputKeepsTheChoice) {
+  const Model& model = testing::panda();
+  GraspSelector selector(model, {bottleSideGrasp()}, testing::shippedConfig());
+  const GraspChoice before = selector.update(bottleAt(Vector3(0.55, 0.0, 0.30)), testing::readyConfiguration());
+  ASSERT_TRUE(before.valid);
+  // the choice names its candidate in the object frame
+  EXPECT_LT((before.grasp_in_object.matrix() - selector.candidates()[before.index].in_object.matrix()).norm(), 1e-15);
+  Isometry bad = bottleAt(Vector3(0.55, 0.0, 0.30));
+  bad.translation().x() = std::numeric_limits<double>::quiet_NaN();
+  const GraspChoice& c = selector.update(bad, testing::readyConfiguration());
+  EXPECT_TRUE(c.valid);
+  EXPECT_EQ(c.index, before.index);
+  EXPECT_FALSE(c.switched);
+  EXPECT_TRUE(c.q_grasp.allFinite());
+  Vector7 q_bad = testing::readyConfiguration();
+  q_bad[2] = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(selector.update(bottleAt(Vector3(0.55, 0.0, 0.30)), q_bad).index, before.index);
+}
+
+TEST(GraspSelector, WarmUpdatesTrackAMovingObject) {
+  const Model& model = testing::panda();
+  GraspSelector selector(model, {bottleSideGrasp()}, testing::shippedConfig());
+  Vector7 q_now = testing::readyConfiguration();
+  int cold_iterations = 0, warm_iterations = 0;
+  for (int k = 0; k < 60; ++k) {  // 1 s at 60 Hz, 0.15 m/s sideways
+    const GraspChoice& c = selector.update(bottleAt(Vector3(0.55, -0.075 + 0.0025 * k, 0.30)), q_now);
+    ASSERT_TRUE(c.valid) << k;
+    int its = 0;
+    for (const CandidateEvaluation& e : selector.evaluations()) its += e.iterations;
+    (k == 0 ? cold_iterations : warm_iterations) += its;
+    const Isometry X = tcpPose(model, c.q_grasp);
+    EXPECT_LT((X.translation() - c.grasp.translation()).norm(), 1e-3);
+  }
+  // warm starts are what makes the sensor rate affordable
+  EXPECT_LT(warm_iterations / 59.0, 0.25 * cold_iterations);
+}
+
+}  // namespace
+}  // namespace handover::control::grasp
