@@ -47,7 +47,7 @@ std::string resultsCsvHeader() {
          "hand_still_to_grasp,total_time,min_human_distance,human_contacts,object_dropped,"
          "limit_position,limit_velocity,limit_torque,qp_failures,grasp_error_pos,grasp_error_rot_deg,"
          "control_step_us_median,control_step_us_p99,control_step_us_max,realtime_factor,error,"
-         "index,direction,grasp,shape,behaviour,placement,hand,height,category,expected_outcome,met";
+         "index,direction,grasp,shape,behaviour,placement,hand,height,category,expected_outcome,met,drop_time,drop_reason";
 }
 
 std::string resultsCsvRow(const BatchEntry& e) {
@@ -64,7 +64,7 @@ std::string resultsCsvRow(const BatchEntry& e) {
      << ',' << csvField(s.error_message) << ',' << e.index << ',' << e.category.direction << ','
      << e.category.grasp << ',' << e.category.shape << ',' << e.category.behaviour << ',' << e.category.placement
      << ',' << e.category.hand << ',' << e.category.height << ',' << scenario::categoryLabel(e.category) << ','
-     << e.expected_outcome << ',' << (e.expectation_met ? 1 : 0);
+     << e.expected_outcome << ',' << (e.expectation_met ? 1 : 0) << ',' << num(s.drop_time) << ',' << s.drop_reason;
   return os.str();
 }
 
@@ -165,6 +165,8 @@ std::vector<BatchEntry> parseResultsCsv(const std::string& text, const std::stri
     s.min_human_distance = real("min_human_distance").value_or(INFINITY);
     s.human_contacts = integer("human_contacts");
     s.object_dropped = get("object_dropped") == "1";
+    s.drop_time = real("drop_time");
+    s.drop_reason = get("drop_reason");
     s.limit_violations = {integer("limit_position"), integer("limit_velocity"), integer("limit_torque")};
     s.qp_failures = integer("qp_failures");
     s.grasp_error_pos = real("grasp_error_pos");

@@ -80,6 +80,13 @@ TEST(OutcomeJudge, ObjectOnTableIsDrop) {
   const RunSummary r = play(sc);
   EXPECT_EQ(r.outcome, "object_drop");
   EXPECT_TRUE(r.object_dropped);
+  // when and why: the first step on the table, after the release
+  ASSERT_TRUE(r.drop_time.has_value());
+  EXPECT_NEAR(*r.drop_time, sc.t_release + 1e-3, 1.5e-3);
+  EXPECT_EQ(r.drop_reason, "table");
+  const RunSummary clean = play(Script{});
+  EXPECT_FALSE(clean.drop_time.has_value());
+  EXPECT_EQ(clean.drop_reason, "");
 }
 
 TEST(OutcomeJudge, QpFailureIsUnsafe) {

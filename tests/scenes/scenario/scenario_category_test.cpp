@@ -66,41 +66,33 @@ TEST(CategoryOf, ShippedScenarios) {
   EXPECT_EQ(f.hand, "left");
 }
 
-TEST(CategoryOf, PresentationTiltDoesNotChangeTheFamily) {
-  // a bottle held tilted by 20 deg is still taken from the top
-  const std::string text = R"(
-name: tilted
+// a take of a bottle held with `holds_rpy` in the hand, plus `extra` lines
+std::string bottleTake(const std::string& holds_rpy, const std::string& extra) {
+  return R"(
+name: b
 mode: human_to_robot
 duration: 10
-behaviour: plain
 object: {shape: cylinder, size: [0.03, 0.2], mass: 0.3, grasp: {pos: [0, 0, 0.06], rpy: [3.1416, 0, 0]}}
 human:
   stand: {pos: [1.0, 0.0], yaw: 3.1416}
   height: 1.75
   start: {pos: [0.85, 0.25, 0.10]}
-  holds_object: {pos: [0, 0, 0.04], rpy: [0.35, 0, 0]}
+  holds_object: {pos: [0, 0, 0.04], rpy: )" +
+         holds_rpy + R"(}
   script:
     - reach: {pos: [0.55, 0.05, 0.30], duration: 1.0}
-)";
-  const Category c = categoryOf(parseScenarioString(text, "tilted.yaml"));
+)" + extra;
+}
+
+TEST(CategoryOf, PresentationTiltDoesNotChangeTheFamily) {
+  // a bottle held tilted by 20 deg is still taken from the top
+  const Category c = categoryOf(parseScenarioString(bottleTake("[0.35, 0, 0]", "behaviour: plain\n"), "tilted.yaml"));
   EXPECT_EQ(c.grasp, "top");
   EXPECT_EQ(c.behaviour, "plain");
 }
 
 TEST(Behaviour, MustBeOneLowercaseWord) {
-  const std::string base = R"(
-name: b
-mode: human_to_robot
-duration: 10
-object: {shape: sphere, size: [0.03], mass: 0.2}
-human:
-  stand: {pos: [1.0, 0.0], yaw: 3.1416}
-  height: 1.75
-  start: {pos: [0.85, 0.25, 0.10]}
-  holds_object: {pos: [0, 0, 0.04]}
-  script:
-    - hold: {duration: 1.0}
-)";
+  const std::string base = bottleTake("[0, 0, 0]", "");
   EXPECT_NO_THROW(parseScenarioString(base + "behaviour: late_release\n", "b.yaml"));
   EXPECT_THROW(parseScenarioString(base + "behaviour: Late Release\n", "b.yaml"), InputError);
 }
