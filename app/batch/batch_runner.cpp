@@ -1,4 +1,5 @@
 #include "app/batch/batch_runner.hpp"
+#include "app/report/output_files.hpp"
 
 #include <unistd.h>
 
@@ -12,6 +13,7 @@
 
 #include "app/batch/scenario_variation.hpp"
 #include "app/run/run_scenario.hpp"
+#include "app/validate/scenario_validation.hpp"
 #include "config/input_error.hpp"
 #include "scenes/scenario/scenario_parser.hpp"
 
@@ -31,11 +33,6 @@ std::string duration(double s) {
   return b;
 }
 
-std::string safeName(std::string s) {
-  for (char& c : s)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
-  return s;
-}
 
 }  // namespace
 
@@ -43,7 +40,7 @@ std::vector<BatchEntry> runBatch(const BatchOptions& opt, std::ostream& out) {
   // parse everything first: bad input fails the batch before it starts
   std::vector<Job> jobs;
   for (const auto& file : opt.files) {
-    const scenario::Scenario base = scenario::parseScenario(file);
+    const scenario::Scenario base = loadValidScenario(file);
     if (opt.vary <= 0) {
       Job j{base, {}};
       j.entry.scenario_file = file;
@@ -59,7 +56,7 @@ std::vector<BatchEntry> runBatch(const BatchOptions& opt, std::ostream& out) {
     }
   }
 
-  std::filesystem::create_directories(opt.out_dir);
+  prepareOutputDir(opt.out_dir);
   std::atomic<std::size_t> next{0};
   std::atomic<int> finished{0}, succeeded{0};
   std::mutex print_mutex;
@@ -101,7 +98,7 @@ std::vector<BatchEntry> runBatch(const BatchOptions& opt, std::ostream& out) {
       ro.plots = false;
       ro.log_every_ms = opt.per_run_files ? 5 : 0;
       if (opt.per_run_files) {
-        ro.out_dir = opt.out_dir + "/runs/" + safeName(job.scenario.name);
+        ro.out_dir = opt.out_dir + "/runs/" + safeFileName(job.scenario.name);
       }
       try {
         job.entry.summary = runScenario(job.scenario, ro);
@@ -131,12 +128,10 @@ std::vector<BatchEntry> runBatch(const BatchOptions& opt, std::ostream& out) {
   entries.reserve(jobs.size());
   for (auto& j : jobs) entries.push_back(std::move(j.entry));
 
-  const std::string csv_path = opt.out_dir + "/results.csv";
-  std::ofstream csv(csv_path);
-  if (!csv) throw std::runtime_error(csv_path + ": cannot write");
-  csv << resultsCsvHeader() << "\n";
-  for (const auto& e : entries) csv << resultsCsvRow(e) << "\n";
-  std::ofstream(opt.out_dir + "/summary.json") << batchSummaryJson(entries);
+  std::string csv = resultsCsvHeader() + "\n";
+  for (const auto& e : entries) csv += resultsCsvRow(e) + "\n";
+  writeFileChecked(opt.out_dir + "/results.csv", csv);
+  writeFileChecked(opt.out_dir + "/summary.json", batchSummaryJson(entries));
   return entries;
 }
 
