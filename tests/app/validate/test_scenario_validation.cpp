@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "app/batch/scenario_variation.hpp"
 #include "app/validate/scenario_validation.hpp"
 #include "config/input_error.hpp"
 
@@ -108,4 +109,16 @@ TEST(Validation, ConfigFilesThatAreNotControllerConfigs) {
   // another config of the project: its own unknown key, named at the scenario's config line too
   const std::string fsm = derived("seed: 1", "seed: 1\nconfig: config/fsm.yaml");
   expectError(fsm, "config", "config:", "fsm.yaml");
+}
+
+// `handover batch --vary` runs generated variants: each must pass the same
+// validation, or the batch would report inputs that `check` never saw
+TEST(Validation, GeneratedVariantsOfShippedScenariosPass) {
+  for (const auto& e : fs::directory_iterator(std::string(HANDOVER_SOURCE_DIR) + "/scenes/scenarios")) {
+    if (e.path().extension() != ".yaml") continue;
+    const scenario::Scenario base = app::loadValidScenario(e.path().string());
+    for (int k = 1; k <= 20; ++k) {
+      EXPECT_NO_THROW(app::validateScenario(app::makeVariant(base, k))) << e.path() << " variant " << k;
+    }
+  }
 }
