@@ -106,6 +106,7 @@ struct Scenario {
   SourceRef config_where;    ///< the `config:` key, else the document
   SourceRef start_q_where;   ///< robot.start_q (empty if not given)
   SourceRef object_where;    ///< the `object:` map
+  SourceRef sensor_where;    ///< the `sensor:` map, else the document
   std::vector<std::pair<std::string, SourceRef>> override_where;  ///< each `set:` key, in file order
 };
 

@@ -385,7 +385,12 @@ Scenario readScenario(const YamlReader& root) {
   if (auto r = root.optionalChild("robot")) readRobot(*r, s);
   else s.robot_holds_where = refOf(root);
   readHuman(root.child("human"), s.human);
-  if (auto r = root.optionalChild("sensor")) readSensor(*r, s.sensor);
+  if (auto r = root.optionalChild("sensor")) {
+    s.sensor_where = refOf(*r);
+    readSensor(*r, s.sensor);
+  } else {
+    s.sensor_where = refOf(root);
+  }
   if (auto r = root.optionalChild("expect")) readExpect(*r, s.expect, s.duration);
   root.finish();
   checkScenario(s);

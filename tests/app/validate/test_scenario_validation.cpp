@@ -90,6 +90,11 @@ TEST(Validation, PeriodMustMatchTheSimulator) {
   expectError(derived("seed: 1", "seed: 1\nset:\n  period: 1.0e-5"), "set.period", "period:", "simulator's step");
 }
 
+TEST(Validation, SamplesMustArriveBeforeTheyAreStale) {
+  // 80 ms latency + 25 ms between samples >= max_age 0.1 s
+  expectError(derived("rate_hz: 60", "rate_hz: 40\n  latency: 0.08"), "sensor", "rate_hz", "stale");
+}
+
 TEST(Validation, TorqueScaleMustHoldTheArmAgainstGravity) {
   expectError(derived("seed: 1", "seed: 1\nset:\n  limits.torque.scale: 0.001"), "set.limits.torque.scale",
               "limits.torque.scale", "gravity");
