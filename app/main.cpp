@@ -1,7 +1,9 @@
 // The `handover` command line (design notes section 3). Exit codes: 0 = ran
 // and expectations held, 1 = ran and an expectation failed, 2 = bad input or
 // a fault before the run could start.
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -18,7 +20,9 @@
 #include "app/hold_posture.hpp"
 #include "app/plot_runner.hpp"
 #include "app/report/benchmark_report.hpp"
+#include "app/report/output_files.hpp"
 #include "app/run/run_scenario.hpp"
+#include "app/validate/scenario_validation.hpp"
 #include "config/input_error.hpp"
 #include "scenes/scenario/scenario_parser.hpp"
 
@@ -29,7 +33,7 @@ using namespace handover;
 int runCommand(const std::string& file, std::string out_dir, const std::string& video, bool view, bool quiet,
                int log_every_ms, const std::string& tracker) {
   const scenario::Scenario sc = scenario::parseScenario(file);
-  if (out_dir.empty()) out_dir = "out/" + sc.name;
+  if (out_dir.empty()) out_dir = "out/" + app::safeFileName(sc.name);
   app::RunOptions ro;
   ro.out_dir = out_dir;
   ro.video_path = video;
@@ -49,8 +53,11 @@ int runCommand(const std::string& file, std::string out_dir, const std::string& 
   std::cout << "files      " << out_dir << "/summary.json" << (log_every_ms > 0 ? ", log.csv" : "")
             << (log_every_ms > 0 && plot_status == 0 ? ", *.png" : "") << (video.empty() ? "" : ", " + video) << "\n";
   if (plot_status != 0) std::cerr << "handover: warning: plots not drawn (exit " << plot_status << ")\n";
-  if (r.outcome == "error") return 2;
-  return r.expectation_failures.empty() ? 0 : 1;
+  const int code = app::runExitCode(r, sc.expect.outcome.has_value());
+  if (code == 1 && r.expectation_failures.empty()) {
+    std::cout << "UNSAFE     a limit was violated or the QP failed (no `expect: outcome` accepts it): exit 1\n";
+  }
+  return code;
 }
 
 int batchCommand(const app::BatchOptions& opt, bool quiet) {
@@ -81,11 +88,14 @@ int checkCommand(const std::vector<std::string>& files) {
   int bad = 0;
   for (const auto& f : files) {
     try {
-      const scenario::Scenario sc = scenario::parseScenario(f);
+      const scenario::Scenario sc = app::loadValidScenario(f);
       std::cout << f << ": ok (" << sc.name << ", " << scenario::toString(sc.mode) << ", " << sc.human.script.size()
                 << " steps)\n";
     } catch (const InputError& e) {
       std::cerr << e.what() << "\n";
+      ++bad;
+    } catch (const std::exception& e) {
+      std::cerr << f << ": fault: " << e.what() << "\n";
       ++bad;
     }
   }
@@ -228,7 +238,17 @@ int main(int argc, char** argv) {
   hold_cmd->add_option("--duration", hold.duration, "simulated seconds")->capture_default_str();
   hold_cmd->add_option("--urdf", hold.urdf, "robot description (default scenes/panda.urdf)");
   hold_cmd->add_option("--scene", hold.sim.scene_path, "MuJoCo scene (default scenes/handover_scene.xml)");
-  hold_cmd->add_option("--max-drift-mm", max_drift_mm, "exit 1 if the TCP drifts farther")->capture_default_str();
+  hold_cmd->add_option("--max-drift-mm", max_drift_mm, "exit 1 if the TCP drifts farther")
+      ->capture_default_str()
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            // CLI::Range lets nan through (every comparison with it is false)
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            return std::isfinite(v) && v >= 0.0 && end && *end == '\0' ? std::string()
+                                                                        : "expected a finite number >= 0, got " + text;
+          },
+          "MM >= 0"));
 
   try {
     cli.parse(argc, argv);
@@ -260,7 +280,9 @@ int main(int argc, char** argv) {
         std::cerr << "handover: error: " << plot_dir << "/log.csv: no such file (run `handover run` first)\n";
         return 2;
       }
-      return app::drawPlots(plot_dir, false) == 0 ? 0 : 2;
+      const int status = app::drawPlots(plot_dir, false);
+      if (status != 0) std::cerr << "handover: error: plots of " << plot_dir << " not drawn (exit " << status << ")\n";
+      return status == 0 ? 0 : 2;
     }
     if (hold_cmd->parsed()) {
       const app::HoldSummary s = app::holdPosture(hold);
@@ -271,6 +293,9 @@ int main(int argc, char** argv) {
       }
     }
   } catch (const InputError& e) {
+    std::cerr << "handover: error: " << e.what() << "\n";
+    return 2;
+  } catch (const app::OutputError& e) {
     std::cerr << "handover: error: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {

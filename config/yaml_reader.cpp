@@ -1,8 +1,10 @@
 #include "config/yaml_reader.hpp"
 
 #include <cmath>
-#include <fstream>
+#include <set>
 #include <sstream>
+
+#include "config/bounded_file.hpp"
 
 namespace handover {
 
@@ -17,6 +19,25 @@ std::string describe(const YAML::Node& n) {
   return "an unknown node";
 }
 
+// yaml-cpp keeps every entry of a map with a repeated key and lookups return
+// the first: refuse the repetition, naming the second occurrence's line
+void rejectDuplicateKeys(const YAML::Node& n, const std::string& origin, const std::string& path) {
+  if (n.IsSequence()) {
+    for (std::size_t i = 0; i < n.size(); ++i) rejectDuplicateKeys(n[i], origin, path + "[" + std::to_string(i) + "]");
+    return;
+  }
+  if (!n.IsMap()) return;
+  std::set<std::string> seen;
+  for (const auto& kv : n) {
+    const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("<a non-scalar key>");
+    const std::string child = path.empty() ? key : path + "." + key;
+    if (!seen.insert(key).second) {
+      YamlReader(kv.first, origin, child).fail("duplicate key '" + key + "' (each key may appear once in a map)");
+    }
+    rejectDuplicateKeys(kv.second, origin, child);
+  }
+}
+
 }  // namespace
 
 YamlReader::YamlReader(YAML::Node node, std::string file, std::string path)
@@ -26,16 +47,13 @@ YamlReader::YamlReader(YAML::Node node, std::string file, std::string path)
       used_(std::make_shared<std::set<std::string>>()) {}
 
 YamlReader YamlReader::loadFile(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return loadString(ss.str(), path);
+  return loadString(readBoundedFile(path, kMaxYamlBytes, "YAML file"), path);
 }
 
 YamlReader YamlReader::loadString(const std::string& text, const std::string& origin) {
   try {
     YAML::Node root = YAML::Load(text);
+    rejectDuplicateKeys(root, origin, "");
     return YamlReader(root, origin, "");
   } catch (const YAML::Exception& e) {
     std::ostringstream os;
@@ -218,6 +236,7 @@ void YamlReader::allowOnly(std::initializer_list<const char*> allowed) const {
 void applyOverrides(YAML::Node doc, const YamlReader& overrides, const std::string& target_file) {
   if (overrides.isNull()) return;
   if (!overrides.isMap()) overrides.fail("expected a map of dotted keys to values");
+  if (!doc.IsMap()) overrides.fail(target_file + " is not a map of settings: nothing to override");
   for (const std::string& dotted : overrides.keys()) {
     const YamlReader value = overrides.child(dotted);
     // walk the dotted path; each step must exist already. yaml-cpp's

@@ -22,9 +22,12 @@ namespace handover {
 /// finish() can reject unknown keys with the right line.
 class YamlReader {
  public:
-  /// Loads a file; throws InputError naming the file on I/O or syntax errors.
+  /// Loads a file (at most kMaxYamlBytes, config/bounded_file.hpp); throws
+  /// InputError naming the file on I/O or syntax errors, on a file too large and
+  /// on a key repeated within one map (yaml-cpp would silently keep one).
   static YamlReader loadFile(const std::string& path);
   /// Parses text (tests, overrides); `origin` is used in messages as the file.
+  /// Duplicate keys are refused as in loadFile.
   static YamlReader loadString(const std::string& text, const std::string& origin);
 
   YamlReader(YAML::Node node, std::string file, std::string path);

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "control/controller_config_bounds.hpp"
+
 namespace handover::control {
 
 namespace {
@@ -123,6 +125,7 @@ ControllerConfig parseControllerConfig(const YamlReader& root) {
     s->finish();
   }
   root.finish();
+  checkControllerBounds(cfg, root);
   return cfg;
 }
 

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "config/bounded_file.hpp"
 #include "config/input_error.hpp"
 #include "perception/pose_codec.hpp"
 
@@ -31,14 +32,24 @@ void writePoseCsv(const std::string& path, const std::vector<PoseSample>& sample
 }
 
 std::vector<PoseSample> readPoseCsv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open file");
+  return parsePoseCsv(readBoundedFile(path, kMaxPoseCsvBytes, "pose recording (CSV)"), path);
+}
+
+std::vector<PoseSample> parsePoseCsv(const std::string& text, const std::string& path) {
   std::vector<PoseSample> out;
   std::string line;
   int lineno = 0;
   bool header_seen = false;
+  std::istringstream in(text);
+  // a UTF-8 byte-order mark (spreadsheet exports) is not part of the header
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) in.seekg(3);
   while (std::getline(in, line)) {
     ++lineno;
+    if (line.size() > kMaxEncodedSample) {
+      throw InputError(path + ":" + std::to_string(lineno) + ": line longer than " +
+                       std::to_string(kMaxEncodedSample) + " bytes (not a pose sample)");
+    }
+    if (line.find('\0') != std::string::npos) throw InputError(path + ":" + std::to_string(lineno) + ": NUL byte");
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty() || line[0] == '#') continue;
     if (!header_seen) {

@@ -19,9 +19,18 @@ const char* poseCsvHeader();
 /// Writes samples to `path`; throws InputError if the file cannot be written.
 void writePoseCsv(const std::string& path, const std::vector<PoseSample>& samples);
 
+/// Largest pose recording read (256 MiB: over 10 minutes at 1 kHz); larger
+/// files and endless devices are refused unread.
+constexpr std::size_t kMaxPoseCsvBytes = std::size_t{256} << 20;
+
 /// Reads a pose CSV; throws InputError "file:line: ..." on a bad header, a
-/// wrong column count, a non-number, a non-unit quaternion or stamps that go back.
+/// wrong column count, a non-number, a non-unit quaternion, stamps that go
+/// back, a line longer than a sample can be, or a file above kMaxPoseCsvBytes.
+/// A leading UTF-8 byte-order mark is skipped.
 std::vector<PoseSample> readPoseCsv(const std::string& path);
+
+/// The same from the file's text (`path` names it in messages).
+std::vector<PoseSample> parsePoseCsv(const std::string& text, const std::string& path);
 
 /// Replays a file: sample i is delivered once now >= stamp_i + time_shift.
 /// Loading is start-up only; poll() is real-time safe.

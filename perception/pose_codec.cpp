@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 namespace handover::perception {
 
@@ -78,6 +79,19 @@ const char* decodeSample(const char* text, char sep, PoseSample& out) {
   }
   out = s;
   return nullptr;
+}
+
+const char* decodeDatagram(const char* data, std::size_t n, PoseSample& out) {
+  static constexpr char kPrefix[] = "hpose ";
+  if (n >= kMaxDatagram) return "datagram too long";
+  if (std::memchr(data, '\0', n) != nullptr) return "datagram contains a NUL byte";
+  if (n < sizeof kPrefix - 1 || std::memcmp(data, kPrefix, sizeof kPrefix - 1) != 0) {
+    return "datagram does not start with 'hpose '";
+  }
+  char text[kMaxDatagram];
+  std::memcpy(text, data + sizeof kPrefix - 1, n - (sizeof kPrefix - 1));
+  text[n - (sizeof kPrefix - 1)] = '\0';
+  return decodeSample(text, ',', out);
 }
 
 }  // namespace handover::perception

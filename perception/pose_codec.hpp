@@ -21,4 +21,13 @@ int encodeSample(const PoseSample& s, char sep, char* buf, std::size_t size);
 /// (those within are normalised).
 const char* decodeSample(const char* text, char sep, PoseSample& out);
 
+/// Largest datagram of the UDP stream, bytes; longer ones are malformed.
+constexpr std::size_t kMaxDatagram = 1024;
+
+/// Decodes one UDP datagram of `n` bytes (not NUL-terminated; `n` may exceed
+/// what was received when the datagram was truncated): "hpose " and the 22
+/// comma-separated numbers. Returns nullptr or a static message (too long, a
+/// NUL byte, a wrong prefix, or decodeSample's reasons). Real-time safe.
+const char* decodeDatagram(const char* data, std::size_t n, PoseSample& out);
+
 }  // namespace handover::perception

@@ -41,8 +41,7 @@ UdpPoseSource::~UdpPoseSource() {
 }
 
 bool UdpPoseSource::poll(double now, PoseSample& out) {
-  static constexpr char kPrefix[] = "hpose ";
-  char buf[kMaxDatagram + 1];
+  char buf[kMaxDatagram];
   for (;;) {
     // MSG_TRUNC returns the real length, so oversize datagrams are caught
     const ssize_t n = ::recv(fd_, buf, kMaxDatagram, MSG_DONTWAIT | MSG_TRUNC);
@@ -50,16 +49,8 @@ bool UdpPoseSource::poll(double now, PoseSample& out) {
       if (errno == EINTR) continue;
       return false;  // EAGAIN: nothing pending (other errors: treat as nothing)
     }
-    const char* err = nullptr;
-    if (static_cast<std::size_t>(n) >= kMaxDatagram) {
-      err = "datagram too long";
-    } else {
-      buf[n] = '\0';
-      if (std::memchr(buf, '\0', static_cast<std::size_t>(n)) != nullptr) err = "datagram contains a NUL byte";
-      else if (std::strncmp(buf, kPrefix, sizeof kPrefix - 1) != 0) err = "datagram does not start with 'hpose '";
-    }
     PoseSample s;
-    if (!err) err = decodeSample(buf + sizeof kPrefix - 1, ',', s);
+    const char* err = decodeDatagram(buf, static_cast<std::size_t>(n), s);
     if (err) {
       ++malformed_;
       last_error_ = err;

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <string>
 
+#include "perception/pose_codec.hpp"
 #include "perception/pose_source.hpp"
 
 namespace handover::perception {
@@ -21,7 +22,7 @@ enum class UdpStamp {
 
 class UdpPoseSource : public PoseSource {
  public:
-  static constexpr std::size_t kMaxDatagram = 1024;  ///< bytes; longer ones are malformed
+  static constexpr std::size_t kMaxDatagram = perception::kMaxDatagram;  ///< bytes; longer ones are malformed
 
   /// Binds `bind_address`:`port` (port 0 = any free port, see port()).
   /// Throws InputError naming the address if the socket cannot be opened.

@@ -110,6 +110,8 @@ class HandoverCycle {
   // --- read-outs of the last cycle (for logs, judges, tests) ---------------
   const io::ArmCommand& command() const { return command_; }
   const perception::PerceptionEstimate& estimate() const { return *estimate_; }
+  /// Pose samples the estimator refused so far (non-finite or out of order).
+  long rejectedSamples() const { return estimator_.rejected(); }
   const perception::TargetOutput& target() const { return obs_target_.output(); }
   const fsm::HandoverInput& fsmInput() const { return input_; }
   const fsm::HandoverFsm& machine() const { return *machine_; }

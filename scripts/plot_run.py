@@ -26,9 +26,17 @@ ANGLES = ("roll", "pitch", "yaw")
 
 def read_log(path):
     with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
+        reader = csv.DictReader(f)
+        rows = list(reader)
+        header = reader.fieldnames or []
     if not rows:
         raise ValueError("no rows")
+    # a truncated or padded row (a run killed mid-write, a full disk) is an
+    # error, not a plot with holes
+    for i, r in enumerate(rows):
+        n = sum(1 for k in header if r.get(k) is not None) + len(r.get(None) or [])
+        if n != len(header):
+            raise ValueError("row %d has %d fields, the header %d (truncated file?)" % (i + 2, n, len(header)))
     cols = {}
     for key in rows[0].keys():
         vals = []

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "app/report/benchmark_report.hpp"
+#include "app/report/output_files.hpp"
 #include "config/input_error.hpp"
 
 namespace handover::app {
@@ -18,12 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void writeFile(const fs::path& path, const std::string& text) {
-  std::ofstream f(path, std::ios::binary);
-  f << text;
-  f.close();
-  if (!f) throw std::runtime_error(path.string() + ": cannot write");
-}
+void writeFile(const fs::path& path, const std::string& text) { writeFileChecked(path.string(), text); }
 
 std::string readFile(const fs::path& path) {
   std::ifstream f(path, std::ios::binary);
@@ -38,9 +34,7 @@ std::string reportTitle(std::size_t runs) { return "Handover benchmark report ("
 }  // namespace
 
 void writeBatchOutputs(const std::string& dir, std::vector<BatchEntry> entries, const ShardInfo& shard) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw std::runtime_error(dir + ": cannot create the folder: " + ec.message());
+  prepareOutputDir(dir);
   std::stable_sort(entries.begin(), entries.end(), [](const BatchEntry& a, const BatchEntry& b) { return a.index < b.index; });
   const fs::path csv = fs::path(dir) / "results.csv";
   writeFile(csv, resultsCsv(entries));

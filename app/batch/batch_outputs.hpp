@@ -13,8 +13,8 @@ namespace handover::app {
 
 /// Writes DIR/results.csv (runs in index order), then reads it back and
 /// computes DIR/summary.json and DIR/report.md from what was read (the same
-/// rounding whichever command wrote the rows). Throws std::runtime_error
-/// naming the file when a write fails.
+/// rounding whichever command wrote the rows). Throws OutputError
+/// (app/report/output_files.hpp) naming the file when a write fails.
 void writeBatchOutputs(const std::string& dir, std::vector<BatchEntry> entries, const ShardInfo& shard);
 
 /// The runs of DIR/results.csv. Throws InputError naming the file.

@@ -1,4 +1,5 @@
 #include "app/batch/batch_runner.hpp"
+#include "app/report/output_files.hpp"
 
 #include <unistd.h>
 
@@ -13,6 +14,7 @@
 #include "app/batch/batch_outputs.hpp"
 #include "app/batch/scenario_variation.hpp"
 #include "app/run/run_scenario.hpp"
+#include "app/validate/scenario_validation.hpp"
 #include "config/input_error.hpp"
 #include "scenes/scenario/scenario_parser.hpp"
 
@@ -32,11 +34,6 @@ std::string duration(double s) {
   return b;
 }
 
-std::string safeName(std::string s) {
-  for (char& c : s)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
-  return s;
-}
 
 }  // namespace
 
@@ -61,12 +58,12 @@ std::vector<BatchEntry> runBatch(const BatchOptions& opt, std::ostream& out) {
     jobs.push_back(std::move(j));
   };
   for (const auto& file : opt.files) {
-    const scenario::Scenario base = scenario::parseScenario(file);
+    const scenario::Scenario base = loadValidScenario(file);
     if (opt.vary <= 0) add(base, file, 0);
     for (int k = 1; k <= opt.vary; ++k) add(makeVariant(base, k), file, k);
   }
 
-  std::filesystem::create_directories(opt.out_dir);
+  prepareOutputDir(opt.out_dir);
   std::atomic<std::size_t> next{0};
   std::atomic<int> finished{0}, as_expected{0};
   std::mutex print_mutex;
@@ -108,7 +105,7 @@ std::vector<BatchEntry> runBatch(const BatchOptions& opt, std::ostream& out) {
       ro.plots = false;
       ro.log_every_ms = opt.per_run_files ? 5 : 0;
       if (opt.per_run_files) {
-        ro.out_dir = opt.out_dir + "/runs/" + safeName(job.scenario.name);
+        ro.out_dir = opt.out_dir + "/runs/" + safeFileName(job.scenario.name);
       }
       try {
         job.entry.summary = runScenario(job.scenario, ro);

@@ -4,6 +4,13 @@
 
 namespace handover::app {
 
+int runExitCode(const RunSummary& r, bool outcome_expected) {
+  if (r.outcome == "error") return 2;
+  if (!r.expectation_failures.empty()) return 1;
+  if (!outcome_expected && r.outcome == "unsafe") return 1;
+  return 0;
+}
+
 std::string RunSummary::toJson() const {
   JsonWriter w;
   w.beginObject();
@@ -21,6 +28,7 @@ std::string RunSummary::toJson() const {
       .value("torque", limit_violations.torque)
       .endObject();
   w.value("qp_failures", qp_failures);
+  w.beginObject("tracker").value("source", tracker).value("rejected_samples", static_cast<double>(rejected_samples)).endObject();
   if (grasp_error_pos) {
     w.beginObject("grasp_error").value("pos", grasp_error_pos).value("rot_deg", grasp_error_rot_deg).endObject();
   } else {

@@ -33,6 +33,8 @@ struct RunSummary {
   std::string drop_reason;                    ///< table | floor | fell (nobody held it and it fell), "" if none
   LimitViolations limit_violations;
   int qp_failures = 0;
+  std::string tracker = "simulated";          ///< simulated | csv | udp: where the person's poses came from
+  long rejected_samples = 0;                  ///< tracker samples refused (malformed datagrams, non-finite, out of order)
   std::optional<double> grasp_error_pos;      ///< m
   std::optional<double> grasp_error_rot_deg;  ///< deg
   std::vector<std::string> states;            ///< visited, in order
@@ -44,5 +46,11 @@ struct RunSummary {
   bool success() const { return outcome == "success"; }
   std::string toJson() const;
 };
+
+/// The `handover run` exit code (README, docs/outputs.md): 2 for outcome
+/// "error", 1 for unmet expectations, and 1 for an "unsafe" run whose scenario
+/// does not expect that outcome (`outcome_expected` false): scripts must see
+/// an unsafe run fail even without `expect:`. Else 0.
+int runExitCode(const RunSummary& r, bool outcome_expected);
 
 }  // namespace handover::app

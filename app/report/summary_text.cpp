@@ -22,6 +22,7 @@ std::string formatSummary(const RunSummary& r) {
   std::snprintf(line, sizeof line, "safety     min distance to person %.3f m, contacts %d, dropped %s\n",
                 r.min_human_distance, r.human_contacts, r.object_dropped ? "yes" : "no");
   os << line;
+  if (r.tracker != "simulated") os << "tracker    " << r.tracker << ", " << r.rejected_samples << " samples rejected\n";
   std::snprintf(line, sizeof line, "limits     position %d, velocity %d, torque %d steps; QP failures %d\n",
                 r.limit_violations.position, r.limit_violations.velocity, r.limit_violations.torque, r.qp_failures);
   os << line;

@@ -1,4 +1,7 @@
 #include "app/run/run_log.hpp"
+#include "app/report/output_files.hpp"
+
+#include <sstream>
 
 #include <algorithm>
 #include <cmath>
@@ -75,8 +78,7 @@ void RunLog::end() {
 }
 
 void RunLog::write(const std::string& path) const {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot write the run log");
+  std::ostringstream out;
   for (std::size_t c = 0; c < columns_.size(); ++c) out << (c ? "," : "") << columns_[c];
   out << "\n";
   char buf[32];
@@ -94,7 +96,7 @@ void RunLog::write(const std::string& path) const {
     }
     out << "\n";
   }
-  if (!out) throw std::runtime_error(path + ": write failed");
+  writeFileChecked(path, out.str());
 }
 
 Eigen::Vector3d rpyFromRotation(const Eigen::Matrix3d& R) {

@@ -1,6 +1,7 @@
 #include "app/run/run_scenario.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -10,8 +11,10 @@
 #include <thread>
 
 #include "app/report/outcome_judge.hpp"
+#include "app/report/output_files.hpp"
 #include "app/run/run_log.hpp"
 #include "app/run/world_setup.hpp"
+#include "app/validate/scenario_validation.hpp"
 #include "config/input_error.hpp"
 #include "control/collision/collision_distances.hpp"
 #include "control/collision/collision_model.hpp"
@@ -45,6 +48,7 @@ double clip(double v) { return std::isfinite(v) ? std::min(v, 2.0) : 2.0; }
 }  // namespace
 
 RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
+  validateScenario(sc);  // the same checks as `handover check`
   const bool h2r = sc.mode == scenario::Mode::HumanToRobot;
 
   // -- build everything once (may throw InputError: bad input found late) ----
@@ -73,6 +77,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   perception::SimulatedPoseSensor sensor(sc.sensor, static_cast<std::uint64_t>(sc.seed));
   std::unique_ptr<perception::PoseSource> tracker;
   bool paced = false;
+  const perception::UdpPoseSource* udp = nullptr;  // for its count of malformed datagrams
   if (!opt.tracker.empty()) {
     const std::string& spec = opt.tracker;
     if (spec.rfind("csv:", 0) == 0) {
@@ -80,12 +85,16 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
     } else if (spec.rfind("udp:", 0) == 0) {
       int port = 0;
       try {
-        port = std::stoi(spec.substr(4));
+        std::size_t used = 0;
+        port = std::stoi(spec.substr(4), &used);
+        if (used != spec.size() - 4 || !std::isdigit(static_cast<unsigned char>(spec[4]))) port = -1;  // "22x", " 22"
       } catch (const std::exception&) {
         port = -1;
       }
       if (port <= 0 || port > 65535) throw InputError("--tracker " + spec + ": expected udp:PORT with 1 <= PORT <= 65535");
-      tracker = std::make_unique<perception::UdpPoseSource>(static_cast<std::uint16_t>(port));
+      auto source = std::make_unique<perception::UdpPoseSource>(static_cast<std::uint16_t>(port));
+      udp = source.get();
+      tracker = std::move(source);
       paced = true;
     } else {
       throw InputError("--tracker " + spec + ": expected csv:FILE or udp:PORT");
@@ -123,12 +132,9 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   RunLog log;
   log.reserve(steps / std::max(1, opt.log_every_ms) + 2);
 
-  // output folders exist before anything is written into them
-  if (!opt.out_dir.empty()) std::filesystem::create_directories(opt.out_dir);
-  if (!opt.video_path.empty()) {
-    const std::filesystem::path parent = std::filesystem::path(opt.video_path).parent_path();
-    if (!parent.empty()) std::filesystem::create_directories(parent);
-  }
+  // output folders exist and take writes before the simulation starts
+  if (!opt.out_dir.empty()) prepareOutputDir(opt.out_dir);
+  if (!opt.video_path.empty()) checkVideoPath(opt.video_path);
 #ifdef HANDOVER_HAVE_RENDER
   std::unique_ptr<render::VideoRecorder> video;
   if (!opt.video_path.empty()) {
@@ -316,12 +322,12 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
     r.outcome = "error";
     r.error_message = error;
   }
+  r.tracker = tracker ? (udp ? "udp" : "csv") : "simulated";
+  r.rejected_samples = cycle.rejectedSamples() + (udp ? udp->malformed() : 0);
   r.expectation_failures = checkExpectations(sc, r);
 
   if (!opt.out_dir.empty()) {
-    std::filesystem::create_directories(opt.out_dir);
-    const std::string summary_path = opt.out_dir + "/summary.json";
-    std::ofstream(summary_path) << r.toJson();
+    writeFileChecked(opt.out_dir + "/summary.json", r.toJson());
     if (opt.log_every_ms > 0) log.write(opt.out_dir + "/log.csv");
   }
   return r;

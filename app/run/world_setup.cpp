@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "scenes/scenario/object_geometry.hpp"
+
 namespace handover::app {
 
 std::string sourcePath(const std::string& relative) { return std::string(HANDOVER_SOURCE_DIR) + "/" + relative; }
@@ -22,18 +24,7 @@ sim::SimOptions simOptionsFor(const scenario::Scenario& sc) {
   return o;
 }
 
-double objectWidthAcrossFingers(const scenario::ObjectSpec& obj) {
-  const Eigen::Vector3d y_obj = obj.grasp.linear().col(1);  // finger closing axis in the object frame
-  switch (obj.shape) {
-    case scenario::Shape::Sphere: return 2.0 * obj.size[0];
-    case scenario::Shape::Cylinder:
-      // across the axis: the diameter; along it: the height
-      return std::abs(y_obj.z()) > 0.7 ? obj.size[1] : 2.0 * obj.size[0];
-    case scenario::Shape::Box:
-      return std::abs(y_obj.x()) * obj.size[0] + std::abs(y_obj.y()) * obj.size[1] + std::abs(y_obj.z()) * obj.size[2];
-  }
-  return 0.08;
-}
+double objectWidthAcrossFingers(const scenario::ObjectSpec& obj) { return scenario::objectWidthAcrossFingers(obj); }
 
 control::GraspOffset graspOffsetFor(const scenario::ObjectSpec& obj) {
   control::GraspOffset g;

@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "perception/sensor_settings.hpp"
@@ -103,6 +104,11 @@ struct Scenario {
   perception::SensorSettings sensor;
   Expectations expect;
   SourceRef mode_where, robot_holds_where;
+  SourceRef config_where;    ///< the `config:` key, else the document
+  SourceRef start_q_where;   ///< robot.start_q (empty if not given)
+  SourceRef object_where;    ///< the `object:` map
+  SourceRef sensor_where;    ///< the `sensor:` map, else the document
+  std::vector<std::pair<std::string, SourceRef>> override_where;  ///< each `set:` key, in file order
 };
 
 const char* toString(Mode m);

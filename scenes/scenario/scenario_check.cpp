@@ -3,6 +3,8 @@
 #include <sstream>
 
 #include "config/input_error.hpp"
+#include "scenes/scenario/object_geometry.hpp"
+#include "scenes/scenario/scenario_bounds.hpp"
 
 namespace handover::scenario {
 
@@ -37,10 +39,45 @@ void checkReach(const Scenario& s, const Eigen::Vector3d& shoulder, const BodyDi
   if (target.z() < kFloorZ + 0.05) failAt(where, std::string(what) + " is below the floor");
 }
 
+std::string mm(double m) {
+  std::ostringstream os;
+  os.precision(3);
+  os << m * 1e3 << " mm";
+  return os.str();
+}
+
+// the object fits the gripper at its grasp frame, which lies on or in it, and
+// the person's grip point is at the object
+void checkObjectPoses(const Scenario& s) {
+  const ObjectSpec& o = s.object;
+  SourceRef grasp_where = s.object_where;
+  grasp_where.key += ".grasp";
+  const double width = objectWidthAcrossFingers(o);
+  if (width > kGripperOpening) {
+    failAt(grasp_where, "the object is " + mm(width) + " wide across the fingers (the grasp frame's y axis); the gripper opens " +
+                            mm(kGripperOpening) + " (turn the grasp so the fingers close across a narrower side)");
+  }
+  const double d_grasp = signedDistanceToObject(o, o.grasp.translation());
+  if (d_grasp > kMaxGraspToSurface) {
+    failAt(grasp_where, "the grasp frame is " + mm(d_grasp) + " outside the object's surface; the fingers close within " +
+                            mm(kMaxGraspToSurface) + " of it");
+  }
+  if (s.human.holds_object) {
+    // the grip point (hand origin) in the object frame
+    const Eigen::Vector3d grip = s.human.holds_object->inverse().translation();
+    const double d_hold = signedDistanceToObject(o, grip);
+    if (d_hold > kMaxHoldToSurface) {
+      failAt(s.human.holds_where, "the object's surface is " + mm(d_hold) + " from the hand's grip point; a held object is within " +
+                                      mm(kMaxHoldToSurface) + " of it");
+    }
+  }
+}
+
 }  // namespace
 
 void checkScenario(const Scenario& s) {
   const HumanSpec& h = s.human;
+  checkObjectPoses(s);
   // who holds the object at the start must fit the direction of the handover
   if (s.mode == Mode::HumanToRobot) {
     if (s.robot.holds_object) failAt(s.robot_holds_where, "human_to_robot: the robot must start empty (holds_object: false)");

@@ -7,6 +7,9 @@
 #include <sstream>
 
 #include "config/yaml_reader.hpp"
+#include "control/panda_joint_limits.hpp"
+#include "scenes/scenario/object_geometry.hpp"
+#include "scenes/scenario/scenario_bounds.hpp"
 #include "scenes/scenario/scenario_check.hpp"
 
 namespace handover::scenario {
@@ -16,8 +19,26 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kMaxAngle = 2.0 * M_PI;  // rad
+constexpr double kMaxPosition = 5.0;      // m
 
 SourceRef refOf(const YamlReader& r) { return {r.file(), r.path(), r.line()}; }
+
+// a name goes into JSON, CSV and folder names: printable UTF-8, at most 200 bytes
+const char* badName(const std::string& name) {
+  if (name.size() > 200) return "name longer than 200 bytes";
+  for (std::size_t i = 0; i < name.size();) {
+    const unsigned char c = static_cast<unsigned char>(name[i]);
+    if (c < 0x20 || c == 0x7f) return "name contains a control character";
+    const int len = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+    if (len == 0 || i + len > name.size()) return "name is not valid UTF-8";
+    for (int k = 1; k < len; ++k) {
+      if ((static_cast<unsigned char>(name[i + k]) & 0xc0) != 0x80) return "name is not valid UTF-8";
+    }
+    i += static_cast<std::size_t>(len);
+  }
+  return nullptr;
+}
 
 double positive(const YamlReader& r) {
   const double v = r.asDouble();
@@ -35,12 +56,28 @@ int nonNegativeInt(const YamlReader& r) {
   return v;
 }
 
+// roll-pitch-yaw angles within one turn either way: larger values are typos
+// (degrees for radians) and lose precision in sin/cos
+Eigen::Vector3d readRpy(const YamlReader& r) {
+  const Eigen::Vector3d rpy = r.asVector(3);
+  for (int i = 0; i < 3; ++i) r.at(static_cast<std::size_t>(i)).checkRange(rpy[i], -kMaxAngle, kMaxAngle);
+  return rpy;
+}
+
+// positions within kMaxPosition of the origin (any pose of a scenario is
+// within a few metres of the robot)
+Eigen::Vector3d readPosition(const YamlReader& r) {
+  const Eigen::Vector3d p = r.asVector(3);
+  for (int i = 0; i < 3; ++i) r.at(static_cast<std::size_t>(i)).checkRange(p[i], -kMaxPosition, kMaxPosition);
+  return p;
+}
+
 // {pos: [x, y, z], rpy: [r, p, y]} with rpy optional (identity when missing)
 Eigen::Isometry3d readPose(const YamlReader& r) {
   if (!r.isMap()) r.fail("expected a map {pos: [x, y, z], rpy: [r, p, y]}");
-  const Eigen::Vector3d pos = r.child("pos").asVector(3);
+  const Eigen::Vector3d pos = readPosition(r.child("pos"));
   Eigen::Vector3d rpy = Eigen::Vector3d::Zero();
-  if (auto c = r.optionalChild("rpy")) rpy = c->asVector(3);
+  if (auto c = r.optionalChild("rpy")) rpy = readRpy(*c);
   r.finish();
   return poseFromPosRpy(pos, rpy);
 }
@@ -67,9 +104,9 @@ ScriptStep readStep(const YamlReader& item) {
     needMap();
     s.kind = kind == "reach" ? StepKind::Reach : StepKind::Withdraw;
     const YamlReader pos = body.child("pos");
-    s.pos = pos.asVector(3);
+    s.pos = readPosition(pos);
     s.target_where = refOf(pos);
-    if (auto r = body.optionalChild("rpy")) s.rpy = Eigen::Vector3d(r->asVector(3));
+    if (auto r = body.optionalChild("rpy")) s.rpy = readRpy(*r);
     s.duration = positive(body.child("duration"));
   } else if (kind == "hold") {
     needMap();
@@ -123,12 +160,20 @@ void readObject(const YamlReader& r, ObjectSpec& o) {
   const Eigen::VectorXd v = size.asVector(n);
   o.size.assign(v.data(), v.data() + n);
   for (int i = 0; i < n; ++i) {
-    if (!(v[i] > 0.0)) size.at(static_cast<std::size_t>(i)).fail("sizes must be > 0");
+    if (!(v[i] >= kMinObjectSize)) size.at(static_cast<std::size_t>(i)).fail("sizes below 5 mm are not a hand-held object");
     if (v[i] > 1.0) size.at(static_cast<std::size_t>(i)).fail("sizes above 1 m are not a hand-held object");
   }
   const YamlReader mass = r.child("mass");
   o.mass = positive(mass);
+  if (o.mass < kMinObjectMass) mass.fail("mass below 10 g is not a hand-held object (the simulator needs a real inertia)");
   if (o.mass > 5.0) mass.fail("mass above 5 kg exceeds what the Panda hands over (payload 3 kg)");
+  const double density = o.mass / objectVolume(o);
+  if (density < kMinDensity || density > kMaxDensity) {
+    std::ostringstream os;
+    os << "mass " << o.mass << " kg in " << objectVolume(o) * 1e3 << " l is a density of " << density
+       << " kg/m^3; a solid object is between " << kMinDensity << " (foam) and " << kMaxDensity << " (tungsten)";
+    mass.fail(os.str());
+  }
   if (auto g = r.optionalChild("grasp")) o.grasp = readPose(*g);
   if (auto a = r.optionalChild("free_axis")) {
     const std::string ax = a->asEnum({"x", "y", "z"});
@@ -141,11 +186,14 @@ void readRobot(const YamlReader& r, Scenario& s) {
   if (!r.isMap()) r.fail("expected a map");
   if (auto q = r.optionalChild("start_q")) {
     const Vector7 v = q->asVector(7);
-    // Panda joint limits (facts file)
-    const double lo[7] = {-2.8973, -1.7628, -2.8973, -3.0718, -2.8973, -0.0175, -2.8973};
-    const double hi[7] = {2.8973, 1.7628, 2.8973, -0.0698, 2.8973, 3.7525, 2.8973};
-    for (int i = 0; i < 7; ++i) q->at(static_cast<std::size_t>(i)).checkRange(v[i], lo[i], hi[i]);
+    // inside the joint limits less the position damper's default safety zone
+    // (1% of each range), which the controller never lets the arm enter
+    for (int i = 0; i < 7; ++i) {
+      const double margin = kStartQSafety * (control::kPandaQMax[i] - control::kPandaQMin[i]);
+      q->at(static_cast<std::size_t>(i)).checkRange(v[i], control::kPandaQMin[i] + margin, control::kPandaQMax[i] - margin);
+    }
     s.robot.start_q = v;
+    s.start_q_where = refOf(*q);
   }
   if (auto h = r.optionalChild("holds_object")) {
     s.robot.holds_object = h->asBool();
@@ -160,8 +208,16 @@ void readHuman(const YamlReader& r, HumanSpec& h) {
   if (!r.isMap()) r.fail("expected a map");
   const YamlReader stand = r.child("stand");
   if (!stand.isMap()) stand.fail("expected {pos: [x, y], yaw: rad}");
-  h.stand_pos = stand.child("pos").asVector(2);
-  h.stand_yaw = stand.getDouble("yaw", h.stand_yaw);
+  const YamlReader stand_pos = stand.child("pos");
+  h.stand_pos = stand_pos.asVector(2);
+  const double stand_dist = h.stand_pos.norm();
+  if (stand_dist < kMinStandDistance || stand_dist > kMaxStandDistance) {
+    std::ostringstream os;
+    os << "the person stands " << stand_dist << " m from the robot's base; between " << kMinStandDistance
+       << " m (clear of the table's robot end) and " << kMaxStandDistance << " m (a handover needs them near)";
+    stand_pos.fail(os.str());
+  }
+  if (auto y = stand.optionalChild("yaw")) h.stand_yaw = y->checkRange(y->asDouble(), -kMaxAngle, kMaxAngle);
   stand.finish();
   const YamlReader height = r.child("height");
   h.height = height.checkRange(height.asDouble(), 1.2, 2.2);
@@ -196,8 +252,8 @@ void readSensor(const YamlReader& r, perception::SensorSettings& s) {
   }
   if (auto n = r.optionalChild("noise")) {
     if (!n->isMap()) n->fail("expected {pos: m, rot_deg: deg}");
-    if (auto c = n->optionalChild("pos")) s.noise_pos = nonNegative(*c);
-    if (auto c = n->optionalChild("rot_deg")) s.noise_rot_deg = nonNegative(*c);
+    if (auto c = n->optionalChild("pos")) s.noise_pos = c->checkRange(nonNegative(*c), 0.0, kMaxNoisePos);
+    if (auto c = n->optionalChild("rot_deg")) s.noise_rot_deg = c->checkRange(nonNegative(*c), 0.0, kMaxNoiseRotDeg);
     n->finish();
   }
   if (auto d = r.optionalChild("dropouts")) {
@@ -209,11 +265,18 @@ void readSensor(const YamlReader& r, perception::SensorSettings& s) {
       if (v[0] < 0.0) iv.fail("interval begins before t = 0");
       if (!(v[1] > v[0])) iv.fail("interval must end after it begins");
       if (v[0] < prev_end) iv.fail("intervals must be ordered and must not overlap");
+      if (v[1] > 1e6) iv.fail("interval ends after 10^6 s");
       prev_end = v[1];
       s.dropouts.emplace_back(v[0], v[1]);
     }
   }
-  if (auto o = r.optionalChild("offset")) s.offset = readPose(*o);
+  if (auto o = r.optionalChild("offset")) {
+    s.offset = readPose(*o);
+    const double off = s.offset.translation().norm();
+    const double off_rot = Eigen::AngleAxisd(s.offset.linear()).angle();
+    if (off > kMaxOffsetPos) o->fail("a calibration offset above 10 cm is not a calibrated tracker");
+    if (off_rot > kMaxOffsetRot) o->fail("a calibration offset above 0.2 rad (11 deg) is not a calibrated tracker");
+  }
   r.finish();
 }
 
@@ -271,6 +334,7 @@ Scenario readScenario(const YamlReader& root) {
   s.file = root.file();
   s.name = root.getString("name");
   if (s.name.empty()) root.child("name").fail("name must not be empty");
+  if (const char* why = badName(s.name)) root.child("name").fail(why);
   const YamlReader mode = root.child("mode");
   s.mode = mode.asEnum({"human_to_robot", "robot_to_human"}) == "human_to_robot" ? Mode::HumanToRobot
                                                                                  : Mode::RobotToHuman;
@@ -288,13 +352,17 @@ Scenario readScenario(const YamlReader& root) {
 
   // controller config: given, else the default if it exists; `set:` needs one
   std::optional<YamlReader> cfg = root.optionalChild("config");
+  s.config_where = cfg ? refOf(*cfg) : refOf(root);
   if (cfg) s.config_path = resolveConfig(*cfg, s.file);
   else if (fs::is_regular_file(defaultConfigPath())) s.config_path = defaultConfigPath();
   if (!s.config_path.empty()) {
     try {
-      s.config = YAML::LoadFile(s.config_path);
-    } catch (const YAML::Exception& e) {
-      throw InputError(s.config_path + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
+      s.config = YamlReader::loadFile(s.config_path).node();
+    } catch (const InputError& e) {
+      failAt(s.config_where, std::string("in the controller config: ") + e.what());
+    }
+    if (!s.config.IsNull() && !s.config.IsMap()) {
+      failAt(s.config_where, s.config_path + " is not a controller config (expected a map of settings)");
     }
   }
   if (auto set = root.optionalChild("set")) {
@@ -308,6 +376,7 @@ Scenario readScenario(const YamlReader& root) {
     // clone and merge the values here
     const YAML::Node pristine = YAML::Clone(s.config);
     for (const std::string& key : set->keys()) {
+      s.override_where.emplace_back(key, refOf(set->child(key)));
       YAML::Node one(YAML::NodeType::Map);
       one[key] = set->node()[key];
       applyOverrides(YAML::Clone(pristine), YamlReader(one, set->file(), set->path()), s.config_path);
@@ -316,11 +385,18 @@ Scenario readScenario(const YamlReader& root) {
     s.overrides = YAML::Clone(set->node());
   }
 
-  readObject(root.child("object"), s.object);
+  const YamlReader object = root.child("object");
+  s.object_where = refOf(object);
+  readObject(object, s.object);
   if (auto r = root.optionalChild("robot")) readRobot(*r, s);
   else s.robot_holds_where = refOf(root);
   readHuman(root.child("human"), s.human);
-  if (auto r = root.optionalChild("sensor")) readSensor(*r, s.sensor);
+  if (auto r = root.optionalChild("sensor")) {
+    s.sensor_where = refOf(*r);
+    readSensor(*r, s.sensor);
+  } else {
+    s.sensor_where = refOf(root);
+  }
   if (auto r = root.optionalChild("expect")) readExpect(*r, s.expect, s.duration);
   root.finish();
   checkScenario(s);

@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <functional>
+
+#include "config/bounded_file.hpp"
 
 namespace handover {
 namespace {
@@ -60,6 +63,49 @@ TEST(ApplyOverrides, UnknownDottedKeyNamesScenarioAndKey) {
   EXPECT_NE(msg.find("scenario.yaml:1"), std::string::npos) << msg;
   EXPECT_NE(msg.find("tracking.kk"), std::string::npos) << msg;
   EXPECT_NE(msg.find("controller.yaml"), std::string::npos) << msg;
+}
+
+
+// yaml-cpp keeps both entries of a repeated key and lookups see the first:
+// the reader refuses the repetition at the second occurrence's line
+TEST(YamlReader, DuplicateKeyRefusedAtItsLine) {
+  try {
+    YamlReader::loadString("a: 1\nb:\n  c: 2\n  d: 3\n  c: 4\n", "dup.yaml");
+    FAIL() << "duplicate accepted";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("dup.yaml:5:"), std::string::npos) << m;
+    EXPECT_NE(m.find("'b.c'"), std::string::npos) << m;
+    EXPECT_NE(m.find("duplicate"), std::string::npos) << m;
+  }
+  // the same key in two different maps is fine, also inside lists
+  EXPECT_NO_THROW(YamlReader::loadString("a: {x: 1}\nb: {x: 2}\nl:\n  - {x: 1}\n  - {x: 2}\n", "ok.yaml"));
+  EXPECT_THROW(YamlReader::loadString("l:\n  - {x: 1, x: 2}\n", "dup_in_list.yaml"), InputError);
+}
+
+TEST(YamlReader, OversizeInputRefusedUnreadNamingTheFile) {
+  // /dev/zero never ends: the reader stops one byte past the bound
+  try {
+    YamlReader::loadFile("/dev/zero");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("/dev/zero:", 0), 0u) << m;
+    EXPECT_NE(m.find("larger than"), std::string::npos) << m;
+  }
+  const std::string big = std::string(::testing::TempDir()) + "big.yaml";
+  {
+    std::ofstream out(big);
+    out << "a: \"" << std::string(kMaxYamlBytes, 'x') << "\"\n";
+  }
+  EXPECT_THROW(YamlReader::loadFile(big), InputError);
+  EXPECT_THROW(YamlReader::loadFile(::testing::TempDir()), InputError);  // a folder
+}
+
+TEST(ApplyOverrides, ScalarDocumentIsAnInputErrorNotAFault) {
+  YAML::Node doc = YAML::Load("root:x:0:0:root:/root:/bin/bash");
+  const YamlReader over = YamlReader::loadString("a.b: 1\n", "sc.yaml");
+  EXPECT_THROW(applyOverrides(doc, over, "/etc/passwd"), InputError);
 }
 
 }  // namespace

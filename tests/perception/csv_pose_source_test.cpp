@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "config/input_error.hpp"
+#include "perception/pose_codec.hpp"
 #include "perception/simulated_pose_sensor.hpp"
 
 namespace fs = std::filesystem;
@@ -92,4 +93,52 @@ TEST(CsvPoseSource, BadFilesNameFileAndLine) {
   expectBad(header + "0.5,a,0,0.3,1,0,0,0,0.7,0,0.3,1,0,0,0,0.9,0,0.5,1,0,0,0\n", ":2:", "not a number");
   EXPECT_THROW(readPoseCsv(tempPath("absent.csv")), InputError);
   fs::remove(path);
+}
+
+namespace {
+std::string oneRow() {
+  char line[kMaxEncodedSample];
+  PoseSample s;
+  s.stamp = 0.5;
+  encodeSample(s, ',', line, sizeof line);
+  return line;
+}
+}  // namespace
+
+// spreadsheet exports start with a UTF-8 byte-order mark: skipped, not "expected the header"
+TEST(CsvPoseSource, ByteOrderMarkIsSkipped) {
+  const std::string text = std::string("\xEF\xBB\xBF") + poseCsvHeader() + "\r\n" + oneRow() + "\r\n";
+  const auto samples = parsePoseCsv(text, "bom.csv");
+  ASSERT_EQ(samples.size(), 1u);
+  EXPECT_DOUBLE_EQ(samples[0].stamp, 0.5);
+}
+
+TEST(CsvPoseSource, OversizeLinesAndEndlessFilesAreRefused) {
+  const std::string text = std::string(poseCsvHeader()) + "\n" + std::string(100000, '1') + "\n";
+  try {
+    parsePoseCsv(text, "long.csv");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("long.csv:2: line longer"), std::string::npos) << e.what();
+  }
+  try {
+    readPoseCsv("/dev/zero");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("/dev/zero:", 0), 0u) << e.what();
+  }
+}
+
+TEST(PoseDatagram, DecodesTheStreamFormatAndNamesEachRejection) {
+  PoseSample s;
+  const std::string good = "hpose " + oneRow();
+  EXPECT_EQ(decodeDatagram(good.data(), good.size(), s), nullptr);
+  EXPECT_DOUBLE_EQ(s.stamp, 0.5);
+  const std::string prefix = "hpos " + oneRow();
+  EXPECT_NE(decodeDatagram(prefix.data(), prefix.size(), s), nullptr);
+  const std::string nul = std::string("hpose \0", 7) + oneRow();
+  EXPECT_STREQ(decodeDatagram(nul.data(), nul.size(), s), "datagram contains a NUL byte");
+  EXPECT_STREQ(decodeDatagram(good.data(), kMaxDatagram, s), "datagram too long");
+  EXPECT_NE(decodeDatagram("hpose", 5, s), nullptr);
+  EXPECT_NE(decodeDatagram("", 0, s), nullptr);
 }

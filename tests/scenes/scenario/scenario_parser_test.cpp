@@ -271,3 +271,54 @@ TEST(ShippedScenarios, AllParseAndCoverBothDirections) {
   EXPECT_GE(r2h, 1);
   EXPECT_TRUE(has_default);
 }
+
+// issue 17: values in range that are not physical, and poses that do not fit together
+TEST_F(ScenarioFiles, ObjectsMustBePhysical) {
+  expectError(mutate("size: [0.035, 0.20]", "size: [1.0e-12, 0.20]"), "object.size[0]", "size:", "5 mm");
+  expectError(mutate("mass: 0.3", "mass: 1.0e-12"), "object.mass", "mass:", "10 g");
+  // 0.3 kg in a 1 x 2 cm cylinder: 48 t/m^3
+  expectError(mutate("size: [0.035, 0.20]\n  mass: 0.3", "size: [0.01, 0.02]\n  mass: 0.3"), "object.mass", "mass:",
+              "density");
+}
+
+TEST_F(ScenarioFiles, ObjectMustFitTheGripperAtItsGrasp) {
+  // a box 10 cm across the fingers
+  const std::string wide = mutate("shape: cylinder\n  size: [0.035, 0.20]", "shape: box\n  size: [0.04, 0.10, 0.2]");
+  std::string t = wide;
+  t.replace(t.find("  free_axis: z\n"), 15, "");
+  t.replace(t.find("rpy: [0, 1.5708, 0]"), 19, "rpy: [0, 0, 0]");
+  expectError(t, "object.grasp", "shape:", "wide across the fingers");
+  // rolled 1.1 rad about x: the fingers close across the cylinder's height
+  expectError(mutate("rpy: [0, 1.5708, 0]", "rpy: [1.1, 0, 0]"), "object.grasp", "shape:", "wide across");
+}
+
+TEST_F(ScenarioFiles, GraspFrameAndHoldMustTouchTheObject) {
+  expectError(mutate("grasp: {pos: [0, 0, 0.05]", "grasp: {pos: [0, 0, 0.15]"), "object.grasp", "shape:", "outside");
+  expectError(mutate("grasp: {pos: [0, 0, 0.05]", "grasp: {pos: [1e308, 0, 0.05]"), "object.grasp.pos[0]", "grasp:");
+  expectError(mutate("holds_object: {pos: [0, 0, 0.04]}", "holds_object: {pos: [0, 0, 0.5]}"), "human.holds_object",
+              "holds_object: {pos", "grip point");
+}
+
+TEST_F(ScenarioFiles, SensorAndPlacementWithinSpecification) {
+  expectError(mutate("noise: {pos: 0.002", "noise: {pos: 1e300"), "sensor.noise.pos", "noise:");
+  expectError(mutate("rot_deg: 1.0", "rot_deg: 45"), "sensor.noise.rot_deg", "noise:");
+  expectError(mutate("stand: {pos: [1.0, 0.0]", "stand: {pos: [10.0, 0.0]"), "human.stand.pos", "stand:");
+  expectError(mutate("start: {pos: [0.85, 0.25, 0.10]}", "start: {pos: [0.85, 0.25, 0.10], rpy: [0, 0, 100]}"),
+              "human.start.rpy[2]", "start:");
+  expectError(mutate("holds_object: false", "holds_object: false\n  start_q: [2.8973, -0.785, 0, -2.356, 0, 1.571, 0.785]"),
+              "robot.start_q[0]", "start_q");
+}
+
+TEST_F(ScenarioFiles, NamesAreTextAndKeysAppearOnce) {
+  expectError(mutate("name: t", "name: \"a\\x01b\""), "name", "name:", "control character");
+  expectError(mutate("name: t", "name: a\xff"), "name", "name:", "UTF-8");
+  expectError(mutate("seed: 3", "seed: 3\nseed: 4"), "seed", "seed: 4", "duplicate");
+  expectError(mutate("  mass: 0.3", "  mass: 0.3\n  mass: 0.4"), "object.mass", "mass: 0.4", "duplicate");
+}
+
+TEST_F(ScenarioFiles, ConfigThatIsNotAMapIsAnInputError) {
+  // /etc/passwd parses as one YAML scalar; with `set:` it used to fault in yaml-cpp
+  const std::string cfg = write("scalar.yaml", "root:x:0:0:root:/root:/bin/bash\n");
+  expectError(mutate("seed: 3", "seed: 3\nconfig: " + cfg + "\nset:\n  period: 0.001"), "config", "config:",
+              "not a controller config");
+}
