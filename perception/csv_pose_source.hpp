@@ -16,7 +16,8 @@ namespace handover::perception {
 /// The header line the files start with.
 const char* poseCsvHeader();
 
-/// Writes samples to `path`; throws InputError if the file cannot be written.
+/// Writes samples to `path` (with the object columns when every sample has the
+/// object); throws InputError if the file cannot be written.
 void writePoseCsv(const std::string& path, const std::vector<PoseSample>& samples);
 
 /// Reads a pose CSV; throws InputError "file:line: ..." on a bad header, a
