@@ -47,7 +47,9 @@ std::string importRecordingToCsv(const ImportOptions& o) {
   os << "hand       starts " << posRpy(hand0) << "\n           ends   " << posRpy(z.hand.isometry()) << "\n";
   os << "object     " << (m.object.tracked ? "tracked" : "in the hand") << ", starts "
      << posRpy(a.object.isometry()) << "\n";
-  os << "scenario   human: {hand: " << (m.mirror ? "left" : "right") << ", start: " << posRpy(hand0)
+  // a person facing the robot (-x) has the right shoulder on +y
+  const bool right = a.upper_arm.position.y() > 0.0;
+  os << "scenario   human: {hand: " << (right ? "right" : "left") << ", start: " << posRpy(hand0)
      << ",\n                   holds_object: " << posRpy(hand0.inverse() * a.object.isometry()) << "}\n";
   if (!m.object.shape.empty()) {
     os << "           object: {shape: " << m.object.shape << ", size: [";

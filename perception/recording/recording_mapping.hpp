@@ -19,8 +19,8 @@ struct SignedAxis {
 };
 
 /// Where one tracked body's numbers are: a file (relative to the data folder)
-/// and the names (or 0-based indices, as text) of its 3 position and 4
-/// quaternion columns, in the quaternion order of the mapping.
+/// and the header names of its 3 position and 4 quaternion columns, the
+/// latter in the quaternion order of the mapping.
 struct BodyColumns {
   std::string file;
   std::vector<std::string> position;    ///< 3 column names
