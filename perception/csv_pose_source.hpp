@@ -1,6 +1,8 @@
 // CSV replay of timestamped pose samples (format: docs/perception.md).
 // One header line, then one sample per line, 22 comma-separated numbers:
 //   t, hand_{x,y,z,qw,qx,qy,qz}, forearm_{...}, upper_arm_{...}
+//   (then object_{x,y,z,qw,qx,qy,qz} on every line when the header names
+//   them: a tracked object, perception/object_columns.hpp)
 // t in s, positions in m (world), quaternions body-to-world. Lines starting
 // with '#' and blank lines are skipped. Numbers are written with 17
 // significant digits so a round trip is exact.
