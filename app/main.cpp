@@ -18,6 +18,7 @@
 #include "app/batch/batch_runner.hpp"
 #include "app/generate/scenario_generator.hpp"
 #include "app/hold_posture.hpp"
+#include "app/import/import_recording.hpp"
 #include "app/plot_runner.hpp"
 #include "app/report/benchmark_report.hpp"
 #include "app/report/output_files.hpp"
@@ -226,6 +227,19 @@ int main(int argc, char** argv) {
   CLI::App* check_cmd = cli.add_subcommand("check", "validate scenario files without running them");
   check_cmd->add_option("scenarios", check_files, "scenario files")->required();
 
+  // import
+  app::ImportOptions imp;
+  double imp_speed = 0.0;
+  bool imp_mirror = false;
+  CLI::App* import_cmd = cli.add_subcommand("import", "turn a recording (described by a mapping, docs/recordings.md) "
+                                                      "into a tracker CSV for `run --tracker csv:FILE`");
+  import_cmd->add_option("mapping", imp.mapping, "recording mapping (YAML)")->required();
+  import_cmd->add_option("--data", imp.data_dir, "folder of the recording's files (default: the mapping's `data`)");
+  import_cmd->add_option("--out", imp.out, "tracker CSV to write")->required();
+  import_cmd->add_option("--speed", imp_speed, "playback speed, overrides the mapping's (e.g. 0.8, 1.2)")
+      ->check(CLI::PositiveNumber);
+  import_cmd->add_flag("--mirror", imp_mirror, "swap left and right (a right hand's motion becomes a left hand's)");
+
   // plot
   std::string plot_dir;
   CLI::App* plot_cmd = cli.add_subcommand("plot", "redraw the plots of a run from DIR/log.csv");
@@ -268,6 +282,12 @@ int main(int argc, char** argv) {
       return batchCommand(batch, batch_quiet);
     }
     if (check_cmd->parsed()) return checkCommand(check_files);
+    if (import_cmd->parsed()) {
+      if (imp_speed > 0.0) imp.speed = imp_speed;
+      if (imp_mirror) imp.mirror = true;
+      std::cout << app::importRecordingToCsv(imp) << "files      " << imp.out << "\n";
+      return 0;
+    }
     if (gen_cmd->parsed()) {
       gen.mode = app::parseGenerateMode(gen_mode);
       return generateCommand(gen);

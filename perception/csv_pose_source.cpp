@@ -9,6 +9,7 @@
 
 #include "config/bounded_file.hpp"
 #include "config/input_error.hpp"
+#include "perception/object_columns.hpp"
 #include "perception/pose_codec.hpp"
 
 namespace handover::perception {
@@ -22,11 +23,17 @@ const char* poseCsvHeader() {
 void writePoseCsv(const std::string& path, const std::vector<PoseSample>& samples) {
   std::ofstream out(path);
   if (!out) throw InputError(path + ": cannot open for writing");
-  out << poseCsvHeader() << "\n";
+  // the object columns are written when every sample measured the object
+  bool with_object = !samples.empty();
+  for (const PoseSample& s : samples) with_object &= s.has_object;
+  out << (with_object ? poseCsvHeaderWithObject().c_str() : poseCsvHeader()) << "\n";
   char line[kMaxEncodedSample];
+  std::string row;
   for (const PoseSample& s : samples) {
     encodeSample(s, ',', line, sizeof line);
-    out << line << "\n";
+    row = line;
+    if (with_object) appendObjectColumns(s.object, ',', row);
+    out << row << "\n";
   }
   if (!out) throw InputError(path + ": write failed");
 }
@@ -39,7 +46,7 @@ std::vector<PoseSample> parsePoseCsv(const std::string& text, const std::string&
   std::vector<PoseSample> out;
   std::string line;
   int lineno = 0;
-  bool header_seen = false;
+  bool header_seen = false, with_object = false;
   std::istringstream in(text);
   // a UTF-8 byte-order mark (spreadsheet exports) is not part of the header
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) in.seekg(3);
@@ -53,14 +60,20 @@ std::vector<PoseSample> parsePoseCsv(const std::string& text, const std::string&
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty() || line[0] == '#') continue;
     if (!header_seen) {
-      if (line != poseCsvHeader()) {
-        throw InputError(path + ":" + std::to_string(lineno) + ": expected the header '" + poseCsvHeader() + "'");
+      with_object = line == poseCsvHeaderWithObject();
+      if (line != poseCsvHeader() && !with_object) {
+        throw InputError(path + ":" + std::to_string(lineno) + ": expected the header '" + poseCsvHeader() +
+                         "' (optionally followed by the object columns, docs/perception.md)");
       }
       header_seen = true;
       continue;
     }
     PoseSample s;
-    const char* err = decodeSample(line.c_str(), ',', s);
+    Pose object;
+    const char* err = with_object ? takeObjectColumns(line, ',', object) : nullptr;
+    if (!err) err = decodeSample(line.c_str(), ',', s);
+    s.has_object = with_object;
+    if (with_object) s.object = object;
     if (err) throw InputError(path + ":" + std::to_string(lineno) + ": " + err);
     if (!out.empty() && s.stamp < out.back().stamp) {
       throw InputError(path + ":" + std::to_string(lineno) + ": time stamp goes back");

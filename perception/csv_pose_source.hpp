@@ -1,6 +1,8 @@
 // CSV replay of timestamped pose samples (format: docs/perception.md).
 // One header line, then one sample per line, 22 comma-separated numbers:
 //   t, hand_{x,y,z,qw,qx,qy,qz}, forearm_{...}, upper_arm_{...}
+//   (then object_{x,y,z,qw,qx,qy,qz} on every line when the header names
+//   them: a tracked object, perception/object_columns.hpp)
 // t in s, positions in m (world), quaternions body-to-world. Lines starting
 // with '#' and blank lines are skipped. Numbers are written with 17
 // significant digits so a round trip is exact.
@@ -16,7 +18,8 @@ namespace handover::perception {
 /// The header line the files start with.
 const char* poseCsvHeader();
 
-/// Writes samples to `path`; throws InputError if the file cannot be written.
+/// Writes samples to `path` (with the object columns when every sample has the
+/// object); throws InputError if the file cannot be written.
 void writePoseCsv(const std::string& path, const std::vector<PoseSample>& samples);
 
 /// Largest pose recording read (256 MiB: over 10 minutes at 1 kHz); larger

@@ -30,6 +30,9 @@ bool PerceptionEstimator::addSample(const PoseSample& s) {
     blend(latest_.hand, s.hand);
     blend(latest_.forearm, s.forearm);
     blend(latest_.upper_arm, s.upper_arm);
+    if (s.has_object && latest_.has_object) blend(latest_.object, s.object);
+    else latest_.object = s.object;
+    latest_.has_object = s.has_object;
     latest_.stamp = s.stamp;
   } else {
     latest_ = s;
@@ -69,7 +72,8 @@ const PerceptionEstimate& PerceptionEstimator::estimate(double now, ObjectHolder
     case ObjectHolder::Person:
       o.valid = h.valid;
       o.stale = h.stale;
-      if (h.valid) o.pose = h.hand * settings_.hand_T_object;
+      // a tracked object is measured; otherwise it sits in the hand at the offset
+      if (h.valid) o.pose = latest_.has_object ? latest_.object.isometry() : h.hand * settings_.hand_T_object;
       break;
     case ObjectHolder::Robot:
       o.valid = true;

@@ -1,8 +1,9 @@
 // Keeps the latest pose sample of the person and derives the object's pose.
 // Never extrapolates: a sample older than max_age is reported stale, and the
 // consumer decides what to do (hold, slow down). Who holds the object decides
-// where its pose comes from: the person's hand (hand pose * hand->object
-// offset, as old as the hand sample) or the robot's forward kinematics (TCP
+// where its pose comes from: the person's hand (the tracked object pose when
+// the sample has one, else hand pose * hand->object offset; as old as the
+// hand sample) or the robot's forward kinematics (TCP
 // pose * grasp offset, always fresh). Perception writes estimates, never commands.
 // World frame, m, s. All methods after construction are real-time safe.
 #pragma once
@@ -74,6 +75,8 @@ class PerceptionEstimator {
                                      const Eigen::Isometry3d& tcp_pose = Eigen::Isometry3d::Identity(),
                                      const Eigen::Isometry3d& tcp_T_object = Eigen::Isometry3d::Identity());
 
+  /// True when the latest sample measured the object as its own body.
+  bool objectTracked() const { return have_ && latest_.has_object; }
   long rejected() const { return rejected_; }  ///< samples refused (non-finite or out of order)
   const EstimatorSettings& settings() const { return settings_; }
 

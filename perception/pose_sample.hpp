@@ -31,15 +31,19 @@ struct Pose {
   bool allFinite() const { return position.allFinite() && orientation.coeffs().allFinite(); }
 };
 
-/// A timestamped sample of the three tracked bodies.
+/// A timestamped sample of the three tracked bodies, and of the object when
+/// the tracker follows it as its own rigid body.
 struct PoseSample {
   double stamp = 0.0;  ///< s, time the poses were measured, on the controller's clock
   Pose hand;           ///< grip point frame
   Pose forearm;        ///< origin at the elbow, z along elbow->wrist
   Pose upper_arm;      ///< origin at the shoulder, z along shoulder->elbow
+  bool has_object = false;  ///< `object` was measured (else the object is hand * offset)
+  Pose object;              ///< object frame (the scenario's object frame), world
 
   bool allFinite() const {
-    return std::isfinite(stamp) && hand.allFinite() && forearm.allFinite() && upper_arm.allFinite();
+    return std::isfinite(stamp) && hand.allFinite() && forearm.allFinite() && upper_arm.allFinite() &&
+           (!has_object || object.allFinite());
   }
 };
 

@@ -112,6 +112,8 @@ class HandoverCycle {
   const perception::PerceptionEstimate& estimate() const { return *estimate_; }
   /// Pose samples the estimator refused so far (non-finite or out of order).
   long rejectedSamples() const { return estimator_.rejected(); }
+  /// The source tracks the object as its own body (not hand * offset).
+  bool objectTracked() const { return estimator_.objectTracked(); }
   const perception::TargetOutput& target() const { return obs_target_.output(); }
   const fsm::HandoverInput& fsmInput() const { return input_; }
   const fsm::HandoverFsm& machine() const { return *machine_; }

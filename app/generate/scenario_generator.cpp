@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "app/validate/scenario_validation.hpp"
 #include "config/input_error.hpp"
 #include "scenes/scenario/body_dimensions.hpp"
 #include "scenes/scenario/scenario.hpp"
@@ -431,7 +432,7 @@ GeneratedScenario generateScenario(std::uint64_t seed, int index, GenerateMode m
     g.draws = attempt + 1;
     if (g.yaml.empty()) continue;
     try {
-      scenario::parseScenarioString(g.yaml, g.name + ".yaml");
+      validateScenario(scenario::parseScenarioString(g.yaml, g.name + ".yaml"));  // what `check` does
       return g;
     } catch (const InputError& e) {
       last_error = e.what();  // e.g. a script target the person cannot reach: draw again

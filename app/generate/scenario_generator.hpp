@@ -2,7 +2,8 @@
 // handovers (docs/benchmark.md documents the distribution). A draw is a
 // pure function of (seed, index, mode): the same seed gives the same files,
 // and file k does not depend on how many files are asked for. Every file is
-// parsed back with the same validation as `handover check`; a draw that
+// checked with the same validation as `handover check` (parser, bounds,
+// the model-based checks); a draw that
 // fails it (a target the person cannot reach, ...) is drawn again.
 // Start-up / tooling only (not real-time safe).
 #pragma once

@@ -200,6 +200,10 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
         hout.poses.forearm = est.human.forearm;
         hout.poses.upper_arm = est.human.upper_arm;
         sim.setHumanPoses(hout.poses);
+        // a tracked object sits in the grip where the tracker saw it
+        if (cycle.objectTracked() && sim.objectWelded() && !adapter.payloadSet()) {
+          sim.setObjectGrip(est.human.hand.inverse() * est.object.pose);
+        }
       }
       if (controller.lastStepFellBack() &&
           (controller.fallbackStreak() == 1 || controller.fallbackStreak() % 1000 == 0))
@@ -224,7 +228,8 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
       f.object_pos = obj_true.pose.translation();
       f.object_vel = obj_true.velocity.head<3>();
       f.hand_pos = hout.poses.hand.translation();
-      f.hand_speed = hout.hand_speed;
+      // with a tracker the person's hand is the tracked one (hand_still_to_grasp)
+      f.hand_speed = tracker ? cycle.handVelocity().head<3>().norm() : hout.hand_speed;
       f.finger_width = arm.finger_width;
       f.min_human_distance = std::isfinite(d_human) ? d_human : 1e9;
       const Eigen::Isometry3d grasp_true = obj_true.pose * sc.object.grasp;

@@ -291,7 +291,11 @@ void Simulation::syncWeldReference() {
   // current poses, read from the state itself (xpos lags one step after mj_step)
   const Eigen::Isometry3d hand = humanHandPose();
   const Eigen::Isometry3d obj = poseFrom(d_->qpos + object_qpos_, d_->qpos + object_qpos_ + 3);
-  const Eigen::Isometry3d rel = hand.inverse() * obj;
+  setObjectGrip(hand.inverse() * obj);
+}
+
+void Simulation::setObjectGrip(const Eigen::Isometry3d& rel) {
+  if (!finite(rel)) return;
   const Eigen::Quaterniond q(rel.linear());
   mjtNum* data = m_->eq_data + mjNEQDATA * weld_;
   // MuJoCo 2.2.2 weld: anchor (in body2) 0..2, relpos (body2 in body1) 3..5, relquat 6..9

@@ -84,6 +84,10 @@ class Simulation : public io::ArmDriver {
   /// object does not jump. Real-time safe.
   void setObjectWeld(bool on);
   bool objectWelded() const;
+  /// Sets where the grip holds the object: its pose in the hand frame (e.g.
+  /// from a tracker that follows the object); the weld pulls it there.
+  /// Non-finite input is ignored. Real-time safe.
+  void setObjectGrip(const Eigen::Isometry3d& hand_T_object);
 
   /// Puts the object at `pose` (world) with `velocity` [linear; angular],
   /// world axes; while welded, the grip is re-taken at the new pose (no snap

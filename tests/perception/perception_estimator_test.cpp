@@ -72,3 +72,37 @@ TEST(PerceptionEstimator, ObjectPoseFromWhoeverHoldsIt) {
   EXPECT_TRUE(r.object.pose.isApprox(tcp * grasp, 1e-12));
   EXPECT_FALSE(est.estimate(1.0, ObjectHolder::Nobody).object.valid);
 }
+
+TEST(PerceptionEstimator, TrackedObjectPoseReplacesTheHandOffset) {
+  EstimatorSettings cfg;
+  cfg.hand_T_object.translation() = Eigen::Vector3d(0.0, 0.0, 0.05);
+  cfg.smoothing_time = 0.03;
+  PerceptionEstimator est(cfg);
+  PoseSample s = at(1.0, 0.5);
+  s.has_object = true;
+  s.object.position = {0.7, 0.1, 0.35};  // away from hand * offset
+  s.object.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitX()));
+  ASSERT_TRUE(est.addSample(s));
+  EXPECT_TRUE(est.objectTracked());
+  const auto& e = est.estimate(1.0, ObjectHolder::Person);
+  EXPECT_LT((e.object.pose.translation() - s.object.position).norm(), 1e-12);
+  EXPECT_LT((e.object.pose.linear() - s.object.orientation.toRotationMatrix()).norm(), 1e-12);
+  // a later sample moves the tracked object; smoothing applies to it like to the hand
+  PoseSample s2 = s;
+  s2.stamp = 1.01;
+  s2.object.position.x() = 0.8;
+  ASSERT_TRUE(est.addSample(s2));
+  const double x = est.estimate(1.01, ObjectHolder::Person).object.pose.translation().x();
+  EXPECT_GT(x, 0.7);
+  EXPECT_LT(x, 0.8);
+  // without the object in the sample, the hand offset is back
+  PoseSample s3 = at(1.02, 0.5);
+  ASSERT_TRUE(est.addSample(s3));
+  EXPECT_FALSE(est.objectTracked());
+  const auto& e3 = est.estimate(1.02, ObjectHolder::Person);
+  EXPECT_LT((e3.object.pose.translation() - e3.human.hand * Eigen::Vector3d(0, 0, 0.05)).norm(), 1e-12);
+  // the robot's forward kinematics win once the robot holds it
+  Eigen::Isometry3d tcp = Eigen::Isometry3d::Identity();
+  tcp.translation() = Eigen::Vector3d(0.4, 0.0, 0.5);
+  EXPECT_LT((est.estimate(1.02, ObjectHolder::Robot, tcp).object.pose.translation() - tcp.translation()).norm(), 1e-12);
+}
