@@ -322,6 +322,16 @@ std::string drawText(Rng& rng, std::uint64_t seed, int index, bool take, std::st
   const Vector2d rest_xy = person.stand + 0.18 * facing + 0.22 * outward;
   Vector3d rest(rest_xy.x(), rest_xy.y(), 0.50 * person.height + scenario::kFloorZ);
   if (insideTable(rest)) rest.z() = std::max(rest.z(), 0.15);
+  if (take) {
+    // the object in the resting hand hangs where it hangs at the handover,
+    // shifted: keep it 3 cm above the table wherever it overhangs the table
+    const Vector3d centre = at.object_pos + (rest - at.grip);
+    const Matrix3d& R = at.object;
+    const double lowest = centre.z() - support(o, R.transpose() * Vector3d::UnitZ());
+    const double ex = support(o, R.transpose() * Vector3d::UnitX()), ey = support(o, R.transpose() * Vector3d::UnitY());
+    const bool over_table = centre.x() - ex < 0.75 && centre.x() + ex > -0.35 && std::abs(centre.y()) - ey < 0.5;
+    if (over_table && lowest < 0.03) rest.z() += 0.03 - lowest;
+  }
 
   // how the person moves
   Script s;
