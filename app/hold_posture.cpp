@@ -7,6 +7,7 @@
 #include "config/input_error.hpp"
 #include "control/model/algorithms.hpp"
 #include "control/model/model.hpp"
+#include "control/model/robot_description.hpp"
 #include "scenes/sim/simulation.hpp"
 
 namespace handover::app {
@@ -15,9 +16,10 @@ HoldSummary holdPosture(const HoldOptions& options) {
   if (!std::isfinite(options.duration) || options.duration <= 0.0) {
     throw InputError("hold: --duration must be a positive number of seconds");
   }
-  const std::string urdf =
-      options.urdf.empty() ? std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf" : options.urdf;
-  const control::Model model = control::loadModel(urdf);
+  // the robot description's URDF unless --urdf names another (with the description's names)
+  const control::RobotDescription robot = control::defaultRobotDescription();
+  const control::Model model =
+      control::loadModel(options.urdf.empty() ? robot.urdf : options.urdf, robot, control::Model{}.finger_opening);
   control::Data data(model);
   const int tcp = model.frameId("tcp");
 

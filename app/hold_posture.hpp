@@ -16,7 +16,7 @@ namespace handover::app {
 
 struct HoldOptions {
   double duration = 5.0;  ///< simulated s
-  std::string urdf;       ///< robot description; empty = <source dir>/scenes/panda.urdf
+  std::string urdf;       ///< robot URDF; empty = the robot description's (config/robot.yaml)
   sim::SimOptions sim;    ///< scene file and world options
   /// posture to hold, rad: the "ready" pose by default
   control::Vector7 q_ref = (control::Vector7() << 0.0, -0.7853981633974483, 0.0, -2.356194490192345, 0.0,

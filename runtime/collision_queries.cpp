@@ -5,13 +5,12 @@
 
 namespace handover::runtime {
 
-// The capsule names and links come from scenes/panda.urdf through
-// config/collision.yaml; the gripper is the hand link and the fingers.
+// The roles come from the robot description (config/robot.yaml, gripper).
 bool isGripperCapsule(const control::CollisionBody& b) {
-  return b.link.rfind("panda_hand", 0) == 0 || b.link.find("finger") != std::string::npos;
+  return b.isRobot() && (b.role == control::CapsuleRole::kGripper || b.role == control::CapsuleRole::kFingertip);
 }
 bool isFingertipCapsule(const control::CollisionBody& b) {
-  return isGripperCapsule(b) && b.name.find("hand_b") != std::string::npos;
+  return b.isRobot() && b.role == control::CapsuleRole::kFingertip;
 }
 
 double personDistance(const control::CollisionModel& cm, const control::CollisionData& cd, int skip_rule,

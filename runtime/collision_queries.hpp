@@ -2,8 +2,8 @@
 // of it, the hand, the arm), robot to the table and robot to itself. Used
 // for the state machine's inputs (from the controller's own collision
 // constraint, perceived person) and by the judge (ground-truth person).
-// Which robot capsules form the gripper comes from their role in
-// config/collision.yaml (CollisionBody::link names the robot link).
+// Which robot capsules form the gripper comes from their role in the robot
+// description (config/robot.yaml gripper; CollisionBody::role).
 // m; real-time safe (reads only).
 #pragma once
 
@@ -15,9 +15,9 @@ namespace handover::runtime {
 /// Which of the person's bodies a distance covers.
 enum class PersonPart { kAll, kHand, kArm };
 
-/// The robot's gripper capsules (the hand link and the fingers), and among
-/// them the fingertip capsule ("hand_b", between the fingers: where a held
-/// object sits).
+/// The robot's gripper capsules (the description's gripper links), and among
+/// them the fingertip capsules (gripper.fingertip_capsules: between the
+/// fingers, where a held object sits).
 bool isGripperCapsule(const control::CollisionBody& body);
 bool isFingertipCapsule(const control::CollisionBody& body);
 

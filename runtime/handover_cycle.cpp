@@ -16,7 +16,7 @@ double clip(double v) { return std::isfinite(v) ? std::min(v, 2.0) : 2.0; }
 
 CycleSettings defaultCycleSettings() {
   CycleSettings s;
-  s.urdf_path = std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf";
+  s.robot = control::defaultRobotDescription();
   s.controller = control::loadControllerConfig(control::defaultControllerConfigPath());
   s.collision = control::loadCollisionConfig(control::defaultCollisionConfigPath());
   s.fsm_config_path = fsm::HandoverFsm::defaultConfigPath();
@@ -34,7 +34,7 @@ CycleSettings defaultCycleSettings() {
 
 HandoverCycle::HandoverCycle(const CycleSettings& settings)
     : settings_(settings),
-      controller_(control::loadModel(settings.urdf_path), settings.controller),
+      controller_(control::loadModel(settings.robot, control::Model{}.finger_opening), settings.controller),
       collision_(std::make_shared<control::CollisionConstraint>(controller_.model(), settings.collision)),
       estimator_(settings.estimator),
       obs_target_(settings.target),

@@ -53,6 +53,7 @@
 #include "control/constraints/collision_constraint.hpp"
 #include "control/controller.hpp"
 #include "control/controller_config.hpp"
+#include "control/model/robot_description.hpp"
 #include "fsm/handover/handover_fsm.hpp"
 #include "interfaces/arm_io.hpp"
 #include "perception/observation_target.hpp"
@@ -65,7 +66,7 @@ namespace handover::runtime {
 
 /// Everything the cycle is built from (start-up only).
 struct CycleSettings {
-  std::string urdf_path;                      ///< the robot's model
+  control::RobotDescription robot;            ///< the robot's model: URDF + names, roles, limits
   control::ControllerConfig controller;       ///< tasks, constraints, gains (config/controller.yaml)
   control::CollisionConfig collision;         ///< collision pairs (config/collision.yaml)
   std::string fsm_config_path;                ///< the state machine (config/fsm.yaml)
@@ -79,8 +80,8 @@ struct CycleSettings {
   double upper_arm_length = 0.33;             ///< m, the person's upper-arm capsule (collision)
 };
 
-/// CycleSettings from the repository's config files (config/*.yaml,
-/// scenes/panda.urdf); the object and person fields keep their defaults
+/// CycleSettings from the repository's config files (config/*.yaml, the
+/// robot description config/robot.yaml and its URDF); the object and person fields keep their defaults
 /// for the caller to fill. Throws handover::InputError.
 CycleSettings defaultCycleSettings();
 

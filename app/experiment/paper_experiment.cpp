@@ -12,6 +12,7 @@
 #include "app/run/world_setup.hpp"
 #include "config/input_error.hpp"
 #include "control/controller.hpp"
+#include "control/model/robot_description.hpp"
 #include "fsm/handover/handover_fsm.hpp"
 #include "fsm/handover/handover_params.hpp"
 #include "perception/perception_config.hpp"
@@ -83,7 +84,7 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
 
   // -- build everything once ------------------------------------------------
   const control::ControllerConfig cfg = controllerConfigFor(sc);
-  control::Controller controller(control::loadModel(sourcePath("scenes/panda.urdf")), cfg);
+  control::Controller controller(control::loadModel(control::defaultRobotDescription(), control::Model{}.finger_opening), cfg);
   // the reach meets the pre-grasp frame (method: through the observed object)
   const control::GraspOffset target_offset = preGraspOffset(sc.object, opt.standoff);
   controller.setGraspOffset(target_offset);  // before reset(): it places the observed object at the TCP

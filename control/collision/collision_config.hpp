@@ -3,8 +3,8 @@
 // real-time safe.
 //
 // Bodies a pair rule can name:
-//   robot capsules, matched by their URDF link ("panda_link5") or capsule
-//   name; "*" and "?" are wildcards ("panda_link5*", "panda_*finger");
+//   robot capsules, matched by their URDF link (e.g. "<prefix>link5") or
+//   capsule name; "*" and "?" are wildcards ("*link5*", "*finger");
 //   "table" (a box whose top is the plane z = 0);
 //   "human_hand" (a box in the hand frame), "human_forearm",
 //   "human_upper_arm" (capsules along the segment's z axis).

@@ -59,6 +59,7 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
     CollisionBody b;
     b.name = c.name;
     b.link = c.link;
+    b.role = c.role;
     b.kind = CollisionBodyKind::kRobot;
     b.capsule = static_cast<int>(i);
     b.body = c.body;

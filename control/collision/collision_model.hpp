@@ -24,6 +24,7 @@ enum class CollisionBodyKind { kRobot, kTable, kHumanHand, kHumanForearm, kHuman
 struct CollisionBody {
   std::string name;                 ///< robot: capsule name; else "table", "human_hand", ...
   std::string link;                 ///< robot: URDF link; else same as name
+  CapsuleRole role = CapsuleRole::kArm;  ///< robot: the capsule's role (robot description)
   CollisionBodyKind kind = CollisionBodyKind::kRobot;
   int capsule = -1;                 ///< robot: index into Model::capsules
   int body = -1;                    ///< robot: model body 0..7
@@ -58,7 +59,7 @@ struct CollisionModel {
   /// Index of a rule, or -1.
   int ruleIndex(const std::string& name) const;
   int numPairs() const { return static_cast<int>(pairs.size()); }
-  /// "panda_hand/hand_a - human_hand" style label of a pair (logs, messages).
+  /// "<hand link>/hand_a - human_hand" style label of a pair (logs, messages).
   std::string pairLabel(int pair) const;
 };
 

@@ -1,6 +1,7 @@
 // Rigid-body model of the Panda arm (Model/Data split, as in Pinocchio).
 //
-// Model: const, built once from the URDF (scenes/panda.urdf) by loadModel().
+// Model: const, built once from the robot description (URDF + a small YAML,
+//        robot_description.hpp) by loadModel().
 // Data:  preallocated scratch written by the algorithms in algorithms.hpp.
 //
 // Bodies: index 0 = link0 (fixed base, at the world origin), index i = link i
@@ -34,12 +35,19 @@ struct Frame {
   Isometry placement = Isometry::Identity();  ///< frame pose in the body frame
 };
 
+/// What a capsule is to the handover: part of the arm, of the gripper (its
+/// clearance to the person's hand is scoped by the state machine), or the
+/// gripper's fingertip capsule that closes on the object. From the robot
+/// description (gripper.links, gripper.fingertip_capsules).
+enum class CapsuleRole { kArm, kGripper, kFingertip };
+
 /// A collision capsule: segment [a, b] swept by a sphere of `radius`, in the
 /// frame of body `body` (0..7). Fixed children (hand, fingers) are attached to
 /// body 7 with their points already transformed into link 7's frame.
 struct Capsule {
   std::string name;    ///< e.g. "link3", "hand_a"
-  std::string link;    ///< URDF link it came from (e.g. "panda_hand")
+  std::string link;    ///< URDF link it came from
+  CapsuleRole role = CapsuleRole::kArm;  ///< kFingertip is also a gripper capsule
   int body = 0;
   Vector3 a = Vector3::Zero();  ///< m, body frame
   Vector3 b = Vector3::Zero();  ///< m, body frame
@@ -68,20 +76,26 @@ struct Model {
   bool hasFrame(const std::string& name) const;
 };
 
-/// Loads the model from a URDF. Throws handover::InputError whose message
-/// names the file and what is wrong (missing file, parse error, a joint or
-/// link that is not where the Panda chain needs it, missing limits).
-/// The chain is walked from "panda_link0" through one revolute joint per body;
-/// everything below link 7 must hang on fixed joints or the two prismatic
-/// finger joints (set to finger_opening / 2 each). Frames: every URDF link by
-/// name, plus the aliases "hand" (panda_hand), "tcp" (panda_tcp) and
-/// "ft_sensor" (panda_ft_sensor), which must exist. Collision <cylinder>s are
-/// read as capsules (docs/robot-description.md); a_max comes from the Panda
-/// datasheet table in urdf_loader.cpp (URDF has no acceleration limit).
-/// Not real-time safe (reads a file, allocates).
-Model loadModel(const std::string& urdf_path);
+struct RobotDescription;
 
-/// Same, with the fingers merged into body 7 at another total opening (m, clamped to 0..max).
+/// Loads the model from a URDF with the names of a robot description
+/// (robot_description.hpp). Throws handover::InputError whose message names
+/// the file and what is wrong (missing file, parse error, a joint or link
+/// that is not where the description's chain needs it, missing limits).
+/// The chain is walked from the description's base_link through one revolute
+/// joint per body; everything below link 7 must hang on fixed joints or the
+/// two prismatic finger joints (set to finger_opening / 2 each, m total,
+/// clamped to 0..max). Frames: every URDF link by name, plus the aliases
+/// "hand", "tcp" and "ft_sensor" (the description's frames), which must
+/// exist. Collision <cylinder>s are read as capsules
+/// (docs/robot-description.md), their roles set from the description; a_max
+/// is the description's acceleration_limits (URDF has none).
+/// Not real-time safe (reads files, allocates).
+Model loadModel(const std::string& urdf_path, const RobotDescription& description, double finger_opening);
+/// The description's own URDF.
+Model loadModel(const RobotDescription& description, double finger_opening);
+/// This URDF with the default description's names (config/robot.yaml).
+Model loadModel(const std::string& urdf_path);
 Model loadModel(const std::string& urdf_path, double finger_opening);
 
 /// A rigid payload held by the gripper (the object), attached to body 7.

@@ -1,7 +1,7 @@
 // loadModel(): URDF -> Model. The XML is pre-checked with tinyxml so that the
 // most common mistakes get a message naming the joint and attribute; urdfdom
-// then builds the tree, which we walk from panda_link0 (its links_/joints_
-// are maps in name order, not chain order).
+// then builds the tree, which we walk from the description's base link (its
+// links_/joints_ are maps in name order, not chain order).
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -12,15 +12,11 @@
 
 #include "config/input_error.hpp"
 #include "control/model/model.hpp"
+#include "control/model/robot_description.hpp"
 #include "control/model/rigid_inertia.hpp"
 
 namespace handover::control {
 namespace {
-
-// Panda datasheet joint acceleration limits qdd_max (rad/s^2), joints 1..7
-// (../shared/reference/panda-and-human-facts.md, "Panda - limits"). URDF has
-// no field for them.
-constexpr double kPandaAccelerationLimits[kArmDofs] = {15.0, 7.5, 10.0, 12.5, 15.0, 20.0, 20.0};
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) {
   throw InputError(path + ": " + what);
@@ -83,13 +79,13 @@ Inertia linkInertia(const urdf::Link& link) {
   return transformInertia(local, toIsometry(u.origin));
 }
 
-std::string capsuleBaseName(const std::string& link_name) {
-  const std::string prefix = "panda_";
+std::string capsuleBaseName(const std::string& link_name, const std::string& prefix) {
   return link_name.compare(0, prefix.size(), prefix) == 0 ? link_name.substr(prefix.size()) : link_name;
 }
 
 // Collision cylinders of `link` as capsules on `body`; X = link frame in the body frame.
-void addCapsules(const std::string& path, const urdf::Link& link, int body, const Isometry& X, Model& model) {
+void addCapsules(const std::string& path, const urdf::Link& link, int body, const Isometry& X, const std::string& prefix,
+                 Model& model) {
   const auto& cols = link.collision_array;
   for (std::size_t k = 0; k < cols.size(); ++k) {
     const urdf::Collision& c = *cols[k];
@@ -110,7 +106,7 @@ void addCapsules(const std::string& path, const urdf::Link& link, int body, cons
     }
     const Isometry Xc = X * toIsometry(c.origin);
     Capsule cap;
-    cap.name = capsuleBaseName(link.name);
+    cap.name = capsuleBaseName(link.name, prefix);
     if (cols.size() > 1) cap.name += std::string("_") + static_cast<char>('a' + k);
     cap.link = link.name;
     cap.body = body;
@@ -123,7 +119,7 @@ void addCapsules(const std::string& path, const urdf::Link& link, int body, cons
 
 // Everything below link 7: fixed joints and the prismatic finger joints.
 void mergeSubtree(const std::string& path, const urdf::ModelInterface& urdf, const urdf::Link& link,
-                  const Isometry& X, Model& model, Inertia& body7, double& finger_max) {
+                  const Isometry& X, const std::string& prefix, Model& model, Inertia& body7, double& finger_max) {
   for (const auto& joint : link.child_joints) {
     const urdf::LinkConstSharedPtr child = urdf.getLink(joint->child_link_name);
     if (!child) fail(path, "joint '" + joint->name + "' names a missing child link");
@@ -139,8 +135,32 @@ void mergeSubtree(const std::string& path, const urdf::ModelInterface& urdf, con
     }
     body7 = combineInertia(body7, transformInertia(linkInertia(*child), Xc));
     model.frames.push_back(Frame{child->name, kArmDofs, Xc});
-    addCapsules(path, *child, kArmDofs, Xc, model);
-    mergeSubtree(path, urdf, *child, Xc, model, body7, finger_max);
+    addCapsules(path, *child, kArmDofs, Xc, prefix, model);
+    mergeSubtree(path, urdf, *child, Xc, prefix, model, body7, finger_max);
+  }
+}
+
+// Gripper and fingertip roles of the capsules, from the description's names.
+void assignCapsuleRoles(const std::string& path, const RobotDescription& d, Model& model) {
+  const std::string from = d.file.empty() ? std::string("the robot description") : d.file;
+  for (const std::string& link : d.gripper_links) {
+    if (!model.hasFrame(link)) fail(path, "no link '" + link + "' (a gripper link of " + from + ")");
+  }
+  for (Capsule& c : model.capsules) {
+    for (const std::string& link : d.gripper_links)
+      if (c.link == link) c.role = CapsuleRole::kGripper;
+  }
+  for (const std::string& name : d.fingertip_capsules) {
+    bool found = false;
+    for (Capsule& c : model.capsules) {
+      if (c.name != name) continue;
+      if (c.role != CapsuleRole::kGripper) {
+        fail(path, "capsule '" + name + "' (a fingertip capsule of " + from + ") is not on a gripper link");
+      }
+      c.role = CapsuleRole::kFingertip;
+      found = true;
+    }
+    if (!found) fail(path, "no collision capsule '" + name + "' (a fingertip capsule of " + from + ")");
   }
 }
 
@@ -149,7 +169,16 @@ void mergeSubtree(const std::string& path, const urdf::ModelInterface& urdf, con
 Model loadModel(const std::string& urdf_path) { return loadModel(urdf_path, Model{}.finger_opening); }
 
 Model loadModel(const std::string& urdf_path, double finger_opening) {
+  return loadModel(urdf_path, defaultRobotDescription(), finger_opening);
+}
+
+Model loadModel(const RobotDescription& description, double finger_opening) {
+  return loadModel(description.urdf, description, finger_opening);
+}
+
+Model loadModel(const std::string& urdf_path, const RobotDescription& description, double finger_opening) {
   const std::string& path = urdf_path;
+  const RobotDescription& d = description;
   const std::string xml = readFile(path);
   precheckXml(path, xml);
   const urdf::ModelInterfaceSharedPtr urdf = urdf::parseURDF(xml);
@@ -160,12 +189,12 @@ Model loadModel(const std::string& urdf_path, double finger_opening) {
   model.finger_opening = std::max(0.0, finger_opening);
 
   // walk the arm chain: one revolute joint below each body
-  urdf::LinkConstSharedPtr link = urdf->getLink("panda_link0");
-  if (!link) fail(path, "no link named 'panda_link0' (the chain's base)");
+  urdf::LinkConstSharedPtr link = urdf->getLink(d.base_link);
+  if (!link) fail(path, "no link named '" + d.base_link + "' (the chain's base, base_link of the robot description)");
   model.body_names[0] = link->name;
   model.inertias[0] = linkInertia(*link);
   model.frames.push_back(Frame{link->name, 0, Isometry::Identity()});
-  addCapsules(path, *link, 0, Isometry::Identity(), model);
+  addCapsules(path, *link, 0, Isometry::Identity(), d.capsule_prefix, model);
   for (int i = 0; i < kArmDofs; ++i) {
     urdf::JointConstSharedPtr joint;
     for (const auto& j : link->child_joints) {
@@ -199,17 +228,17 @@ Model loadModel(const std::string& urdf_path, double finger_opening) {
     model.q_max[i] = lim.upper;
     model.v_max[i] = lim.velocity;
     model.tau_max[i] = lim.effort;
-    model.a_max[i] = kPandaAccelerationLimits[i];
+    model.a_max[i] = d.acceleration_limits[i];
     model.body_names[i + 1] = link->name;
     model.inertias[i + 1] = linkInertia(*link);
     model.frames.push_back(Frame{link->name, i + 1, Isometry::Identity()});
-    addCapsules(path, *link, i + 1, Isometry::Identity(), model);
+    addCapsules(path, *link, i + 1, Isometry::Identity(), d.capsule_prefix, model);
   }
 
   // hand, sensor, tcp and fingers are rigidly merged into body 7
   double finger_max = 0.0;
   Inertia body7 = model.inertias[kArmDofs];
-  mergeSubtree(path, *urdf, *link, Isometry::Identity(), model, body7, finger_max);
+  mergeSubtree(path, *urdf, *link, Isometry::Identity(), d.capsule_prefix, model, body7, finger_max);
   model.inertias[kArmDofs] = body7;
   if (finger_max > 0.0) {
     model.finger_max_opening = finger_max;
@@ -217,17 +246,18 @@ Model loadModel(const std::string& urdf_path, double finger_opening) {
   }
 
   // short aliases the controller uses
-  for (const auto& [alias, link_name] : {std::pair<const char*, const char*>{"hand", "panda_hand"},
-                                         {"tcp", "panda_tcp"},
-                                         {"ft_sensor", "panda_ft_sensor"}}) {
+  for (const auto& [alias, link_name] : {std::pair<const char*, const std::string&>{"hand", d.hand_link},
+                                         {"tcp", d.tcp_link},
+                                         {"ft_sensor", d.ft_sensor_link}}) {
     if (!model.hasFrame(link_name)) {
-      fail(path, std::string("no link '") + link_name + "' fixed below '" + model.body_names[kArmDofs] +
-                     "' (needed for the '" + alias + "' frame)");
+      fail(path, "no link '" + link_name + "' fixed below '" + model.body_names[kArmDofs] + "' (needed for the '" +
+                     alias + "' frame)");
     }
     Frame f = model.frames[model.frameId(link_name)];
     f.name = alias;
     model.frames.push_back(f);
   }
+  assignCapsuleRoles(path, d, model);
   return model;
 }
 

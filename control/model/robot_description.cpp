@@ -1,0 +1,62 @@
+#include "control/model/robot_description.hpp"
+
+#include "config/yaml_reader.hpp"
+
+namespace handover::control {
+
+namespace {
+
+std::string folderOf(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+}
+
+std::string nonEmpty(const YamlReader& r, const std::string& key) {
+  const YamlReader c = r.child(key);
+  std::string s = c.asString();
+  if (s.empty()) c.fail("expected a non-empty name");
+  return s;
+}
+
+std::vector<std::string> names(const YamlReader& r, const std::string& key) {
+  const YamlReader c = r.child(key);
+  if (!c.isSequence()) c.fail("expected a list of names");
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < c.size(); ++i) out.push_back(c.at(i).asString());
+  return out;
+}
+
+}  // namespace
+
+RobotDescription loadRobotDescription(const std::string& path) {
+  const YamlReader root = YamlReader::loadFile(path);
+  if (!root.isMap()) root.fail("expected a map (the robot description)");
+  RobotDescription d;
+  d.file = path;
+  d.urdf = nonEmpty(root, "urdf");
+  if (d.urdf.front() != '/') d.urdf = folderOf(path) + d.urdf;
+  d.base_link = nonEmpty(root, "base_link");
+  const YamlReader frames = root.child("frames");
+  d.hand_link = nonEmpty(frames, "hand");
+  d.tcp_link = nonEmpty(frames, "tcp");
+  d.ft_sensor_link = nonEmpty(frames, "ft_sensor");
+  frames.finish();
+  d.capsule_prefix = root.child("capsule_prefix").asString();
+  const YamlReader acc = root.child("acceleration_limits");
+  d.acceleration_limits = acc.asVector(kArmDofs);
+  for (int i = 0; i < kArmDofs; ++i) acc.at(i).checkRange(d.acceleration_limits[i], 1e-3, 1e4);
+  const YamlReader gripper = root.child("gripper");
+  d.gripper_links = names(gripper, "links");
+  d.fingertip_capsules = names(gripper, "fingertip_capsules");
+  gripper.finish();
+  root.finish();
+  return d;
+}
+
+std::string defaultRobotDescriptionPath() {
+  return std::string(HANDOVER_SOURCE_DIR) + "/config/robot.yaml";
+}
+
+RobotDescription defaultRobotDescription() { return loadRobotDescription(defaultRobotDescriptionPath()); }
+
+}  // namespace handover::control

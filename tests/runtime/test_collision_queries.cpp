@@ -1,0 +1,66 @@
+// The collision queries' gripper and fingertip capsules are the robot
+// description's (config/robot.yaml gripper), read from the capsules' roles:
+// the same capsules whatever the links are called.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "control/collision/collision_config.hpp"
+#include "control/collision/collision_model.hpp"
+#include "control/model/robot_description.hpp"
+#include "runtime/collision_queries.hpp"
+
+namespace handover::runtime {
+namespace {
+
+bool listed(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+TEST(CollisionQueries, GripperAndFingertipsAreTheDescriptions) {
+  const control::RobotDescription d = control::defaultRobotDescription();
+  const control::Model model = control::loadModel(d, 0.08);
+  const control::CollisionModel cm =
+      control::buildCollisionModel(model, control::loadCollisionConfig(control::defaultCollisionConfigPath()));
+  int gripper = 0, fingertips = 0, robot = 0;
+  for (const control::CollisionBody& b : cm.bodies) {
+    if (!b.isRobot()) {
+      EXPECT_FALSE(isGripperCapsule(b)) << b.name;
+      EXPECT_FALSE(isFingertipCapsule(b)) << b.name;
+      continue;
+    }
+    ++robot;
+    EXPECT_EQ(isGripperCapsule(b), listed(d.gripper_links, b.link)) << b.link << "/" << b.name;
+    EXPECT_EQ(isFingertipCapsule(b), listed(d.fingertip_capsules, b.name)) << b.link << "/" << b.name;
+    gripper += isGripperCapsule(b);
+    fingertips += isFingertipCapsule(b);
+  }
+  EXPECT_GT(robot, gripper);
+  EXPECT_GT(gripper, fingertips);
+  EXPECT_GT(fingertips, 0);
+}
+
+TEST(CollisionQueries, AnotherGripperIsADescriptionChange) {
+  control::RobotDescription d = control::defaultRobotDescription();
+  const control::Model shipped = control::loadModel(d, 0.08);
+  // call the hand's other capsule the fingertip instead
+  std::string other;
+  for (const control::Capsule& c : shipped.capsules)
+    if (c.role == control::CapsuleRole::kGripper) other = c.name;
+  ASSERT_FALSE(other.empty());
+  d.fingertip_capsules = {other};
+  const control::Model model = control::loadModel(d, 0.08);
+  const control::CollisionModel cm =
+      control::buildCollisionModel(model, control::loadCollisionConfig(control::defaultCollisionConfigPath()));
+  int fingertips = 0;
+  for (const control::CollisionBody& b : cm.bodies) {
+    if (!isFingertipCapsule(b)) continue;
+    EXPECT_EQ(b.name, other);
+    ++fingertips;
+  }
+  EXPECT_EQ(fingertips, 1);
+}
+
+}  // namespace
+}  // namespace handover::runtime
