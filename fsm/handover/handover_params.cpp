@@ -52,6 +52,8 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
     p.max_retries = static_cast<int>(r.checkRange(r.asInt(), 0, 100));
   }
   if (auto t = n.optionalChild("tracking")) {
+    // at most 1000 1/s^2: critically damped at the 1 ms period that is K dt^2 = 1e-3, far
+    // inside the PD bound (control/controller_config_bounds.hpp; a test holds it)
     p.tracking_translation_stiffness = inRange(*t, "translation_stiffness", 0.0, 1000.0);
     p.tracking_orientation_stiffness = inRange(*t, "orientation_stiffness", 0.0, 1000.0);
     t->finish();

@@ -89,7 +89,6 @@ BAD = [
     ("too_wide", [("shape: cylinder", "shape: box"), ("size: [0.03, 0.20]", "size: [0.1, 0.1, 0.1]"),
                   ("  free_axis: z\n", "")], r"wide across the fingers"),
     ("noise", [("noise: {pos: 0.001", "noise: {pos: 1e300")], r"key 'sensor\.noise\.pos'"),
-    ("stale_sensor", [("rate_hz: 60", "rate_hz: 40\n  latency: 0.08")], r"key 'sensor'.*stale"),
     ("mass_tiny", [("mass: 0.3", "mass: 1e-12")], r"key 'object\.mass'"),
     ("size_tiny", [("size: [0.03, 0.20]", "size: [1e-12, 0.20]")], r"key 'object\.size\[0\]'"),
     ("duplicate_key", [("seed: 1", "seed: 1\nseed: 2")], r"key 'seed'.*duplicate"),
