@@ -98,7 +98,7 @@ TEST(Validation, PeriodMustMatchTheSimulator) {
 TEST(Validation, LatencyBeyondTheEstimatorsAgeIsAValidScenario) {
   // 80 ms latency + 25 ms between samples >= max_age 0.1 s: the contract
   // allows latencies up to 1 s; staleness is the run's to report
-  EXPECT_NO_THROW(loadValidScenario(derived("rate_hz: 60", "rate_hz: 40\n  latency: 0.08")));
+  EXPECT_NO_THROW(handover::app::loadValidScenario(derived("rate_hz: 60", "rate_hz: 40\n  latency: 0.08")));
 }
 
 TEST(Validation, TorqueScaleMustHoldTheArmAgainstGravity) {
