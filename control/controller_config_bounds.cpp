@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "control/panda_joint_limits.hpp"
+#include "control/datasheet_joint_limits.hpp"
 
 namespace handover::control {
 
@@ -114,8 +114,8 @@ void checkControllerBounds(const ControllerConfig& cfg, const YamlReader& root) 
   // the posture target lies where the position damper lets the arm go
   const double safety = cfg.limits.position.safety;
   for (int i = 0; i < kArmDofs; ++i) {
-    const double range = kPandaQMax[i] - kPandaQMin[i];
-    const double lo = kPandaQMin[i] + safety * range, hi = kPandaQMax[i] - safety * range;
+    const double range = kDatasheetQMax[i] - kDatasheetQMin[i];
+    const double lo = kDatasheetQMin[i] + safety * range, hi = kDatasheetQMax[i] - safety * range;
     const double q = cfg.posture.target[i];
     if (!(q >= lo && q <= hi)) {
       failAt(root, "posture.target", "posture.target[" + std::to_string(i) + "] = " + num(q) + " rad is outside joint " +

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "config/yaml_reader.hpp"
-#include "control/panda_joint_limits.hpp"
+#include "control/datasheet_joint_limits.hpp"
 #include "scenes/scenario/object_geometry.hpp"
 #include "scenes/scenario/scenario_bounds.hpp"
 #include "scenes/scenario/scenario_check.hpp"
@@ -189,8 +189,8 @@ void readRobot(const YamlReader& r, Scenario& s) {
     // inside the joint limits less the position damper's default safety zone
     // (1% of each range), which the controller never lets the arm enter
     for (int i = 0; i < 7; ++i) {
-      const double margin = kStartQSafety * (control::kPandaQMax[i] - control::kPandaQMin[i]);
-      q->at(static_cast<std::size_t>(i)).checkRange(v[i], control::kPandaQMin[i] + margin, control::kPandaQMax[i] - margin);
+      const double margin = kStartQSafety * (control::kDatasheetQMax[i] - control::kDatasheetQMin[i]);
+      q->at(static_cast<std::size_t>(i)).checkRange(v[i], control::kDatasheetQMin[i] + margin, control::kDatasheetQMax[i] - margin);
     }
     s.robot.start_q = v;
     s.start_q_where = refOf(*q);

@@ -9,7 +9,7 @@
 #include "control/controller_config.hpp"
 #include "control/controller_config_bounds.hpp"
 #include "control/model/model.hpp"
-#include "control/panda_joint_limits.hpp"
+#include "control/datasheet_joint_limits.hpp"
 
 using namespace handover;
 using namespace handover::control;
@@ -92,7 +92,7 @@ TEST(ControllerBounds, MeasuredFailuresAreRefusedWithTheirKey) {
 TEST(ControllerBounds, JointLimitTableMatchesTheUrdf) {
   const Model m = loadModel(std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf");
   for (int i = 0; i < kArmDofs; ++i) {
-    EXPECT_DOUBLE_EQ(m.q_min[i], kPandaQMin[i]) << i;
-    EXPECT_DOUBLE_EQ(m.q_max[i], kPandaQMax[i]) << i;
+    EXPECT_DOUBLE_EQ(m.q_min[i], kDatasheetQMin[i]) << i;
+    EXPECT_DOUBLE_EQ(m.q_max[i], kDatasheetQMax[i]) << i;
   }
 }
