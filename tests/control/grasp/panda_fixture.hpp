@@ -5,6 +5,7 @@
 #include <random>
 #include <string>
 
+#include "control/grasp/chain_kinematics.hpp"
 #include "control/grasp/grasp_selection_config.hpp"
 #include "control/model/model.hpp"
 
@@ -24,6 +25,13 @@ inline Vector7 randomConfiguration(const Model& model, std::mt19937& rng, double
     q[i] = lo + u(rng) * (hi - lo);
   }
   return q;
+}
+
+/// The TCP pose at q (world), through the IK's own chain kinematics.
+inline Isometry tcpPose(const Model& model, const Vector7& q) {
+  ChainPoses poses;
+  chainPoses(model, q, poses);
+  return chainFramePose(model, poses, model.frameId("tcp"));
 }
 
 /// The "ready" pose of the facts sheet (rad).

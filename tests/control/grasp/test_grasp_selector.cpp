@@ -15,11 +15,7 @@ namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
-Isometry tcpPose(const Model& model, const Vector7& q) {
-  ChainPoses poses;
-  chainPoses(model, q, poses);
-  return chainFramePose(model, poses, model.frameId("tcp"));
-}
+using testing::tcpPose;
 
 double rotationAngle(const Matrix3& a, const Matrix3& b) { return Eigen::AngleAxisd(a * b.transpose()).angle(); }
 

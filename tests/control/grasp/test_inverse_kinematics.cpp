@@ -15,11 +15,7 @@ namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
-Isometry tcpPose(const Model& model, const Vector7& q) {
-  ChainPoses poses;
-  chainPoses(model, q, poses);
-  return chainFramePose(model, poses, model.frameId("tcp"));
-}
+using testing::tcpPose;
 
 bool withinLimits(const Model& model, const Vector7& q) {
   return (q.array() >= model.q_min.array()).all() && (q.array() <= model.q_max.array()).all();
