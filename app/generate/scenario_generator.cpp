@@ -5,11 +5,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
 #include <sstream>
 #include <stdexcept>
 
+#include "app/report/output_files.hpp"
 #include "app/validate/scenario_validation.hpp"
 #include "config/input_error.hpp"
 #include "scenes/scenario/body_dimensions.hpp"
@@ -454,18 +454,13 @@ GeneratedScenario generateScenario(std::uint64_t seed, int index, GenerateMode m
 
 std::vector<std::string> generateScenarios(const GenerateOptions& opt) {
   namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::create_directories(opt.out_dir, ec);
-  if (ec) throw std::runtime_error(opt.out_dir + ": cannot create the folder: " + ec.message());
+  prepareOutputDir(opt.out_dir);
   std::vector<std::string> paths;
   paths.reserve(static_cast<std::size_t>(std::max(0, opt.count)));
   for (int i = 0; i < opt.count; ++i) {
     const GeneratedScenario g = generateScenario(opt.seed, i, opt.mode);
     const std::string path = (fs::path(opt.out_dir) / (g.name + ".yaml")).string();
-    std::ofstream f(path);
-    f << g.yaml;
-    f.close();
-    if (!f) throw std::runtime_error(path + ": cannot write");
+    writeFileChecked(path, g.yaml);  // a failed write names the file and leaves no partial file
     paths.push_back(path);
   }
   return paths;

@@ -35,7 +35,8 @@ struct GeneratedScenario {
 GeneratedScenario generateScenario(std::uint64_t seed, int index, GenerateMode mode);
 
 /// Writes options.count files into options.out_dir; returns their paths in
-/// index order. Throws std::runtime_error when a file cannot be written.
+/// index order. Throws OutputError (app/report/output_files.hpp) naming the
+/// folder or file when it cannot be written.
 std::vector<std::string> generateScenarios(const GenerateOptions& options);
 
 /// "take" | "give" | "both" -> mode; throws std::invalid_argument otherwise.
