@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "control/collision/shape_distance.hpp"
 #include "control/types.hpp"
 
 namespace handover::control {
@@ -55,6 +56,15 @@ struct PersonSettings {
   double margin = 0.03;             ///< m, default extra clearance for sensor noise
 };
 
+/// The object the person holds out, as an obstacle while the gripper
+/// approaches it (pair rules name it "object"). Not read from collision.yaml:
+/// the runtime sets it from the object's geometry (scenario). Object frame
+/// at the shape's centre.
+struct ObjectShapeSettings {
+  ShapeSpec shape = ShapeSpec{};   ///< core: a box, or a segment along z (length 0: a sphere)
+  double radius = 0.03;            ///< m, swept around a segment core (0 for a box)
+};
+
 struct CollisionConfig {
   std::string file;                 ///< where it was read from (messages)
   double broadphase_margin = 0.05;  ///< m, pairs farther than iDist + this are skipped
@@ -69,6 +79,7 @@ struct CollisionConfig {
   DamperSettings defaults;
   TableSettings table;
   PersonSettings person;
+  ObjectShapeSettings object;
   std::vector<PairRule> pairs;
 };
 

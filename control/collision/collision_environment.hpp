@@ -21,6 +21,11 @@ struct CollisionEnvironment {
   Vector6 hand_velocity = Vector6::Zero();
   Vector6 forearm_velocity = Vector6::Zero();
   Vector6 upper_arm_velocity = Vector6::Zero();
+  /// The object the gripper approaches (while the person holds it); false:
+  /// pairs with the object give no rows (the robot holds it, or it is not seen).
+  bool object_valid = false;
+  Isometry object = Isometry::Identity();      ///< object frame in the world (shape centre)
+  Vector6 object_velocity = Vector6::Zero();
 };
 
 }  // namespace handover::control

@@ -98,6 +98,9 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
   seg.length = 0.33;
   cm.human_upper_arm = addEnv("human_upper_arm", CollisionBodyKind::kHumanUpperArm, seg,
                               cfg.person.upper_arm_radius, Isometry::Identity());
+  // cores are centred on their frame, as the object frame is on its shape
+  cm.object = addEnv("object", CollisionBodyKind::kObject, cfg.object.shape,
+                     cfg.object.shape.kind == ShapeSpec::Kind::kBox ? 0.0 : cfg.object.radius, Isometry::Identity());
 
   // pair rules
   std::map<std::pair<int, int>, int> seen;  // unordered body pair -> rule
@@ -132,7 +135,7 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
         }
       }
       if (!any && !hasWildcard(pat))
-        ruleError(cfg, rule, "other side '" + pat + "' matches no robot link, 'table' or human_* body");
+        ruleError(cfg, rule, "other side '" + pat + "' matches no robot link, 'table', 'object' or human_* body");
     }
 
     const int before = cm.numPairs();

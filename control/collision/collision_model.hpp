@@ -19,7 +19,7 @@
 
 namespace handover::control {
 
-enum class CollisionBodyKind { kRobot, kTable, kHumanHand, kHumanForearm, kHumanUpperArm };
+enum class CollisionBodyKind { kRobot, kTable, kHumanHand, kHumanForearm, kHumanUpperArm, kObject };
 
 struct CollisionBody {
   std::string name;                 ///< robot: capsule name; else "table", "human_hand", ...
@@ -54,7 +54,7 @@ struct CollisionModel {
   std::vector<std::string> rule_names;     ///< pair rules by name (run-time switches)
   std::vector<bool> rule_enabled;          ///< start-up state of each rule
   double broadphase_margin = 0.05;         ///< m
-  int table = -1, human_hand = -1, human_forearm = -1, human_upper_arm = -1;  ///< body indices
+  int table = -1, human_hand = -1, human_forearm = -1, human_upper_arm = -1, object = -1;  ///< body indices
 
   /// Index of a rule, or -1.
   int ruleIndex(const std::string& name) const;

@@ -252,3 +252,37 @@ TEST(CollisionDistances, OverlappingCoresKeepAUsableRow) {
   }
   EXPECT_TRUE(any);
 }
+
+// The object the person holds out is an obstacle while it is seen (and only then).
+TEST(CollisionDistances, ObjectIsAnObstacleOnlyWhileItIsSeen) {
+  const Model& m = pandaModel();
+  CollisionConfig cfg = parseCollisionConfig(R"(
+defaults: {iDist: 0.05, sDist: 0.005}
+pairs:
+  - {name: object_gripper, robot: [panda_hand*, panda_*finger], other: object}
+)",
+                                             "object.yaml");
+  cfg.object.shape.kind = ShapeSpec::Kind::kBox;
+  cfg.object.shape.size = Vector3(0.06, 0.06, 0.20);
+  const CollisionModel cm = buildCollisionModel(m, cfg);
+  ASSERT_GE(cm.object, 0);
+  ASSERT_GT(cm.numPairs(), 0);
+  CollisionData cd(cm);
+  Data data(m);
+  forwardKinematics(m, data, readyPose(), Vector7::Zero());
+  const Isometry tcp = framePlacement(m, data, m.frameId("tcp"));
+  // a bottle standing 4 cm below the fingertips' frame, centred under the gripper
+  CollisionEnvironment env;
+  env.object_valid = true;
+  env.object.translation() = tcp.translation() - Vector3(0.0, 0.0, 0.10 + 0.04);
+  updateCollisions(cm, cd, m, data, env);
+  double nearest = 1e9;
+  for (int k = 0; k < cm.numPairs(); ++k)
+    if (cd.results[k].active) nearest = std::min(nearest, cd.results[k].distance);
+  EXPECT_LT(nearest, 0.05);  // the fingertips are within reach of the damper
+  EXPECT_GT(nearest, 0.0);
+  // not seen (or held by the robot): no rows
+  env.object_valid = false;
+  updateCollisions(cm, cd, m, data, env);
+  for (int k = 0; k < cm.numPairs(); ++k) EXPECT_FALSE(cd.results[k].active) << cm.pairLabel(k);
+}
