@@ -25,6 +25,9 @@ struct GraspSpec {
   Isometry placement = Isometry::Identity();  ///< X_grasp^obj: grasp frame in the object frame
   bool has_free_axis = false;
   Vector3 free_axis = Vector3::UnitZ();       ///< object frame, unit; any turn about it (through the origin) is admissible
+  /// Score units added to its candidates' total (grasp_score.hpp): a grasp the
+  /// object declares is preferred to one its shape merely allows.
+  double preference = 0.0;
 };
 
 struct CandidateOptions {

@@ -32,6 +32,7 @@ struct ScoreTerms {
   double manipulability = 0.0;   ///< [0, 1]
   double motion = 0.0;           ///< >= 0
   double clearance = 0.0;        ///< penalty in [0, 1] (1 = touching or overlapping)
+  double preference = 0.0;       ///< the candidate's spec's preference (GraspSpec), in the total
   double total = 0.0;
 };
 

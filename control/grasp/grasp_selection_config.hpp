@@ -31,6 +31,9 @@ struct GraspSelectionConfig {
   double table_height = 0.0;
   double table_clearance = 0.02;
   double hysteresis = 0.15;           ///< score units another candidate must gain to replace the current choice
+  /// Score units added to the grasps the object declares over the families
+  /// its shape allows (GraspSpec::preference; applied by whoever builds the specs).
+  double declared_preference = 0.5;
   /// IK solves from one fixed seed spent per update on candidates without a
   /// warm start (unreachable so far, or lost), round-robin; bounds the cost of
   /// candidates that stay out of reach. 0 = every seed for every such

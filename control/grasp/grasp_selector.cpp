@@ -11,6 +11,7 @@ GraspSelector::GraspSelector(const Model& model, const std::vector<GraspSpec>& s
   if (specs.empty()) throw std::invalid_argument("GraspSelector: the object declares no grasp");
   candidates_ = enumerateGraspCandidates(specs, config.candidates);
   evaluations_.resize(candidates_.size());
+  for (const GraspCandidate& c : candidates_) preference_.push_back(specs[static_cast<std::size_t>(c.spec)].preference);
   warm_.assign(candidates_.size(), false);
   next_seed_.assign(candidates_.size(), 0);
   seeds_.reserve(config.seeds.size() + 1);
@@ -69,6 +70,7 @@ void GraspSelector::evaluate(int k, const Isometry& X_obj, const Vector7& q_now,
     if (start == Start::kNextSeed) next = (next + 1) % static_cast<int>(seeds_.size());
     e.feasible = solvePair(e.grasp, e.pre_grasp, seed, q_now, obstacles, num_obstacles, e);
     warm_[k] = e.feasible;
+    addPreference(k);
     return;
   }
   // every seed, keep the best-scoring solution
@@ -86,6 +88,14 @@ void GraspSelector::evaluate(int k, const Isometry& X_obj, const Vector7& q_now,
     }
   }
   warm_[k] = e.feasible;
+  addPreference(k);
+}
+
+void GraspSelector::addPreference(int k) {
+  CandidateEvaluation& e = evaluations_[k];
+  if (!e.feasible) return;
+  e.score.preference = preference_[static_cast<std::size_t>(k)];
+  e.score.total += e.score.preference;
 }
 
 const GraspChoice& GraspSelector::update(const Isometry& X_obj, const Vector7& q_now, const ObstacleCapsule* obstacles,

@@ -76,6 +76,7 @@ class GraspSelector {
   enum class Start { kWarm, kNextSeed, kAllSeeds };
   void evaluate(int k, const Isometry& X_obj, const Vector7& q_now, const ObstacleCapsule* obstacles,
                 int num_obstacles, Start start);
+  void addPreference(int k);
   bool solvePair(const Isometry& grasp, const Isometry& pre_grasp, const Vector7& seed, const Vector7& q_now,
                  const ObstacleCapsule* obstacles, int num_obstacles, CandidateEvaluation& out);
 
@@ -84,6 +85,7 @@ class GraspSelector {
   int frame_ = 0;
   std::vector<GraspCandidate> candidates_;
   std::vector<CandidateEvaluation> evaluations_;
+  std::vector<double> preference_;  ///< candidate k's spec's preference (score units)
   std::vector<bool> warm_;      ///< candidate k has a converged solution to start from
   std::vector<int> next_seed_;  ///< candidate k's next cold seed (index into seeds_)
   std::vector<Vector7> seeds_;  ///< [q_now, fixed seeds...], slot 0 rewritten each update
