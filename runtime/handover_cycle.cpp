@@ -29,6 +29,8 @@ CycleSettings defaultCycleSettings() {
   s.estimator.smoothing_time = p.smoothing_time;
   s.estimator.rotation_smoothing_time = p.rotation_smoothing_time;
   s.target.blend_time = p.blend_time;
+  s.grasp_selection = control::grasp::loadGraspSelectionConfig(std::string(HANDOVER_SOURCE_DIR) +
+                                                               "/config/grasp_selection.yaml");
   return s;
 }
 
@@ -42,9 +44,27 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
       tcp_T_object_(settings.object.grasp_in_object.inverse()) {
   controller_.formulation().addConstraint(collision_);
   hand_rule_ = collision_->collisionModel().ruleIndex("person_hand_gripper");
-  adapter_.setCollision(collision_.get(), hand_rule_);
+  adapter_.setCollision(collision_.get(), hand_rule_, collision_->collisionModel().ruleIndex("object_gripper"));
   ft_frame_ = controller_.model().frameId("ft_sensor");
   machine_ = fsm::HandoverFsm::fromFile(settings.fsm_config_path, adapter_, settings.object);
+  if (!settings.object_grasps.empty()) {
+    GraspPlanningSettings ps;
+    ps.config = settings.grasp_selection;
+    ps.object_grasps = settings.object_grasps;
+    ps.presentation = machine_->context().presentation.offset;
+    ps.up_axis = settings.object_up_axis;
+    ps.forearm_length = settings.forearm_length;
+    ps.upper_arm_length = settings.upper_arm_length;
+    ps.forearm_radius = settings.collision.person.forearm_radius;
+    ps.upper_arm_radius = settings.collision.person.upper_arm_radius;
+    ps.hand_radius = 0.5 * settings.collision.person.hand_size.maxCoeff();
+    planning_ = std::make_unique<GraspPlanning>(controller_.model(), ps);
+    machine_->setPlanner(planning_.get());
+  }
+}
+
+void HandoverCycle::plan() {
+  if (planning_) planning_->update(*estimate_, control_in_.q, adapter_.payloadSet());
 }
 
 void HandoverCycle::start(const io::ArmState& arm, bool holds_object) {
@@ -64,6 +84,8 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   // 1. perceive (who holds the object, and the TCP, as of the last cycle)
   estimator_.update(t, source);
   const bool robot_holds = adapter_.payloadSet();
+  if (robot_holds && !robot_held_) tcp_T_object_ = machine_->context().grasp.offset.inverse();  // the grasp closed on
+  robot_held_ = robot_holds;
   const perception::PerceptionEstimate& est =
       estimator_.estimate(t, robot_holds ? perception::ObjectHolder::Robot : perception::ObjectHolder::Person,
                           controller_.tcpPose(), tcp_T_object_);
@@ -92,6 +114,9 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   env.forearm_length = settings_.forearm_length;
   env.upper_arm_length = settings_.upper_arm_length;
   env.hand_velocity = hand_vel_.velocity();
+  env.object_valid = est.object.valid && !est.object.stale && est.object.holder == perception::ObjectHolder::Person;
+  env.object = est.object.pose;
+  env.object_velocity = object_vel_.velocity();
   collision_->setEnvironment(env);
 
   // 7. the QP
@@ -143,6 +168,10 @@ void HandoverCycle::assembleInput(double t, const io::ArmState& arm, const perce
   in.target_pose = gf.pose;
   in.target_velocity = gf.velocity;
   in.holds_object = robot_holds;
+  if (planning_) {
+    in.object_plan = planning_->objectPlan();
+    in.hand_plan = planning_->handPlan();
+  }
 }
 
 }  // namespace handover::runtime

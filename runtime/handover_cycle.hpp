@@ -10,11 +10,14 @@
 //   cycle.stop();                           // tears down the active states
 //
 // Stages of step(t, arm, source), in this order:
+//   0. plan        (plan(), before step, not timed with it) grasp or
+//                  presentation choice from the previous cycle's estimate.
 //   1. perceive    drain `source` of the samples that arrived by t; the
 //                  estimate at t (hand, forearm, upper arm, object). Who holds
 //                  the object is the payload the state machine set in the
 //                  previous cycle; while the robot holds it, its pose is the
-//                  TCP pose of the previous Controller::step.
+//                  TCP pose of the previous Controller::step with the grasp
+//                  the state machine closed on.
 //   2. velocities  finite-difference hand and object velocities on new samples.
 //   3. fsm input   assemble fsm::HandoverInput (table below).
 //   4. fsm         the state machine steps; through the adapter it changes
@@ -38,7 +41,8 @@
 //                       robot-person distances: all computed by the previous
 //                       Controller::step at the previous q (before the first
 //                       step: from start()'s reset at the start state);
-//   as last commanded   observation target kind, object held (payload set).
+//   as last commanded   observation target kind, object held (payload set);
+//   as last planned     object_plan, hand_plan (stage 0).
 //
 // Frames: world (z up, robot base at the origin); SI units.
 // Real-time: step() allocates nothing and does no I/O (the controller's QP
@@ -60,6 +64,7 @@
 #include "perception/perception_estimator.hpp"
 #include "perception/pose_source.hpp"
 #include "runtime/adapter/controller_adapter.hpp"
+#include "runtime/grasp_planning.hpp"
 #include "runtime/sensed_velocity.hpp"
 
 namespace handover::runtime {
@@ -78,6 +83,11 @@ struct CycleSettings {
   double gripper_force = 40.0;                ///< N, grasp force limit at start (params.gripper)
   double forearm_length = 0.27;               ///< m, the person's forearm capsule (collision)
   double upper_arm_length = 0.33;             ///< m, the person's upper-arm capsule (collision)
+  /// Grasp planning (config/grasp_selection.yaml): the grasps the object
+  /// admits; empty = no planner (the declared grasp, named poses).
+  control::grasp::GraspSelectionConfig grasp_selection;
+  std::vector<control::grasp::GraspSpec> object_grasps;
+  control::Vector3 object_up_axis = control::Vector3::UnitZ();  ///< object frame: kept vertical when carried
 };
 
 /// CycleSettings from the repository's config files (config/*.yaml, the
@@ -96,6 +106,14 @@ class HandoverCycle {
   /// with its payload; else open) and the controller's reset at `arm`
   /// (velocities taken as zero). Call once before the first step.
   void start(const io::ArmState& arm, bool holds_object);
+
+  /// The planning stage, outside the 1 ms step: re-selects the grasp (take)
+  /// or the presentation (give) when perception has a new sample since the
+  /// last call, from the last step's estimate and q. Call it once per cycle
+  /// before step() (it returns at once without a new sample), or from a
+  /// slower thread on a real robot (then hand over the plans under a lock).
+  /// No allocation; 0.1-1 ms per new sample (docs/performance.md).
+  void plan();
 
   /// One cycle at time `t` (s): stages 1-8 above. The reference stays valid
   /// until the next call. RT safe.
@@ -120,6 +138,8 @@ class HandoverCycle {
   const fsm::HandoverFsm& machine() const { return *machine_; }
   const control::Controller& controller() const { return controller_; }
   const ControllerAdapter& adapter() const { return adapter_; }
+  /// The grasp planner (null without object grasps).
+  const GraspPlanning* planning() const { return planning_.get(); }
   const control::CollisionConstraint& collision() const { return *collision_; }
   /// Index of the person-hand/gripper rule the state machine relaxes (-1: none).
   int handGripperRule() const { return hand_rule_; }
@@ -138,6 +158,8 @@ class HandoverCycle {
   perception::ObservationTarget obs_target_;
   ControllerAdapter adapter_;
   std::unique_ptr<fsm::HandoverFsm> machine_;
+  std::unique_ptr<GraspPlanning> planning_;
+  bool robot_held_ = false;  ///< the payload was set in the previous cycle
   Eigen::Isometry3d tcp_T_object_ = Eigen::Isometry3d::Identity();
   SensedVelocity hand_vel_, object_vel_;
   perception::PerceptionEstimate no_estimate_;  ///< before the first step

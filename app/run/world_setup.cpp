@@ -36,4 +36,48 @@ control::GraspOffset graspOffsetFor(const scenario::ObjectSpec& obj) {
   return g;
 }
 
+control::ObjectShapeSettings collisionShapeFor(const scenario::ObjectSpec& obj) {
+  control::ObjectShapeSettings o;
+  const std::vector<double>& s = obj.size;
+  switch (obj.shape) {
+    case scenario::Shape::Box:
+      o.shape.kind = control::ShapeSpec::Kind::kBox;
+      o.shape.size = control::Vector3(s[0], s[1], s[2]);
+      o.radius = 0.0;
+      break;
+    case scenario::Shape::Cylinder:  // a box around it: flat ends, like the cylinder's
+      o.shape.kind = control::ShapeSpec::Kind::kBox;
+      o.shape.size = control::Vector3(2.0 * s[0], 2.0 * s[0], s[1]);
+      o.radius = 0.0;
+      break;
+    case scenario::Shape::Sphere:
+      o.shape.kind = control::ShapeSpec::Kind::kSegment;
+      o.shape.length = 0.0;
+      o.radius = s[0];
+      break;
+  }
+  return o;
+}
+
+std::vector<control::grasp::GraspSpec> graspSpecsFor(const scenario::ObjectSpec& obj, double declared_preference,
+                                                     double gripper_opening) {
+  namespace cg = control::grasp;
+  cg::GraspSpec s;
+  s.placement = obj.grasp;
+  if (obj.free_axis >= 0) {
+    s.has_free_axis = true;
+    s.free_axis = control::Vector3::Unit(obj.free_axis);
+  }
+  s.preference = declared_preference;
+  std::vector<cg::GraspSpec> specs{s};
+  // and every family the shape allows (a person may hold it anywhere)
+  const cg::PrimitiveShape shape = obj.shape == scenario::Shape::Box        ? cg::PrimitiveShape::kBox
+                                   : obj.shape == scenario::Shape::Sphere ? cg::PrimitiveShape::kSphere
+                                                                          : cg::PrimitiveShape::kCylinder;
+  cg::ShapeGraspOptions options;
+  options.max_opening = gripper_opening;
+  for (const cg::GraspSpec& g : cg::shapeGraspSpecs(shape, obj.size, options)) specs.push_back(g);
+  return specs;
+}
+
 }  // namespace handover::app

@@ -4,6 +4,10 @@
 
 #include <string>
 
+#include <vector>
+
+#include "control/collision/collision_config.hpp"
+#include "control/grasp/shape_grasps.hpp"
 #include "control/tasks/grasp_frame.hpp"
 #include "scenes/scenario/scenario.hpp"
 #include "scenes/sim/sim_options.hpp"
@@ -21,5 +25,14 @@ double objectWidthAcrossFingers(const scenario::ObjectSpec& object);
 
 /// The grasp frame in the object frame, with the object's symmetry axis.
 control::GraspOffset graspOffsetFor(const scenario::ObjectSpec& object);
+
+/// The object as a collision body (the gripper keeps clear of it while approaching).
+control::ObjectShapeSettings collisionShapeFor(const scenario::ObjectSpec& object);
+
+/// The grasps the object admits, for the grasp planner (object frame): the
+/// declared grasp (with `declared_preference`, score units) and the grasp
+/// families its shape allows for a gripper opening to `gripper_opening` (m).
+std::vector<control::grasp::GraspSpec> graspSpecsFor(const scenario::ObjectSpec& object, double declared_preference,
+                                                     double gripper_opening);
 
 }  // namespace handover::app

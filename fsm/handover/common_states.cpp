@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "fsm/handover/held_object_goal.hpp"
 #include "fsm/handover/perception_checks.hpp"
 
 namespace handover::fsm {
@@ -64,7 +65,7 @@ void Retract::onStart(HandoverContext& ctx) {
   }
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(ObservationTarget::kNone);
-  ctrl().setPoseTarget(goal_);
+  goal_ = carryHeldObject(ctx, ctrl(), goal_);
 }
 
 bool Retract::onRun(HandoverContext& ctx) {
@@ -90,11 +91,11 @@ void Retreat::onStart(HandoverContext& ctx) {
   if (open_) ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(ObservationTarget::kNone);
-  ctrl().setPoseTarget(ctx.params->safe_pose);
+  goal_ = carryHeldObject(ctx, ctrl(), ctx.params->safe_pose);
 }
 
 bool Retreat::onRun(HandoverContext& ctx) {
-  if (positionError(ctx.in.tcp_pose, ctx.params->safe_pose) > pos_tol_ ||
+  if (positionError(ctx.in.tcp_pose, goal_) > pos_tol_ ||
       ctx.in.tcp_velocity.head<3>().norm() > settle_speed_) {
     return false;
   }

@@ -29,7 +29,8 @@ class Rest : public HandoverState {
 };
 
 /// [Stowed] Carries the TCP to a named pose (stow | safe | ready), tracking
-/// off, observation none. Keys: pose, position_tolerance (m),
+/// off, observation none; a held object goes upright near it when a planner
+/// is present (held_object_goal.hpp). Keys: pose, position_tolerance (m),
 /// orientation_tolerance_deg, settle_speed (m/s).
 class Retract : public HandoverState {
  public:
@@ -61,6 +62,7 @@ class Retreat : public HandoverState {
   int retry_, give_up_;
   bool open_ = false;
   double pos_tol_ = 0.03, settle_speed_ = 0.03;
+  Isometry goal_ = Isometry::Identity();  ///< the safe pose, or an upright placement of a held object near it
 };
 
 }  // namespace handover::fsm

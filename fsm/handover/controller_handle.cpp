@@ -53,7 +53,7 @@ void ControllerHandle::enableTracking(bool on) {
   change(Channel::kTracking, next);
 }
 
-void ControllerHandle::setTrackingOffset(const Isometry& offset) {
+void ControllerHandle::setTrackingOffset(const TrackingOffset& offset) {
   ScopedCommands next = ledger_->current();
   next.tracking_offset = offset;
   change(Channel::kTrackingOffset, next);

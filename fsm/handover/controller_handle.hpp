@@ -50,7 +50,9 @@ class ControllerHandle {
 
   void setObservationTarget(ObservationTarget target);
   void enableTracking(bool on);
-  void setTrackingOffset(const Isometry& target_in_observed);
+  void setTrackingOffset(const TrackingOffset& offset);
+  /// A fixed offset the controller may still resolve (free axis, twin).
+  void setTrackingOffset(const Isometry& target_in_observed) { setTrackingOffset(TrackingOffset{target_in_observed, false}); }
   void setPoseTarget(const Isometry& tcp_in_world);
   void clearPoseTarget();
   void setPostureTarget(const Vector7& q);

@@ -18,6 +18,16 @@ using Vector3 = Eigen::Vector3d;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 using Vector7 = Eigen::Matrix<double, 7, 1>;
 
+/// Target frame of the tracking task in the observed frame. `planned`: the
+/// frame is a choice the grasp planner made with the robot's kinematics (a
+/// reachable turn about the object's free axis, or a gripper twin), to be
+/// tracked exactly; otherwise the controller may still turn it about the
+/// object's free axis and pick the gripper's half-turn twin itself.
+struct TrackingOffset {
+  Isometry target_in_observed = Isometry::Identity();
+  bool planned = false;
+};
+
 /// Which sensed body the observation task follows.
 enum class ObservationTarget { kNone, kObject, kHand };
 const char* toString(ObservationTarget target);
@@ -36,7 +46,7 @@ class ControllerInterface {
   /// Target frame of the tracking task expressed in the observed frame: the
   /// grasp frame in the object frame (human to robot), or the TCP pose in
   /// the hand frame that puts the object in the hand (robot to human).
-  virtual void setTrackingOffset(const Isometry& target_in_observed) = 0;
+  virtual void setTrackingOffset(const TrackingOffset& offset) = 0;
   /// Set-point for the TCP (world frame): retract, stow, safe or hold pose.
   virtual void setPoseTarget(const Isometry& tcp_in_world) = 0;
   virtual void clearPoseTarget() = 0;

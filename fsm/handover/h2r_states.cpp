@@ -55,11 +55,13 @@ void Approach::configure(const YamlReader& def) {
 }
 
 void Approach::onStart(HandoverContext& ctx) {
+  trackedChoice(ctx, hand_).adopt(latestPlan(ctx, hand_));
   trackTarget(ctx, ctrl(), hand_, standoff_);
   if (!hand_) ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
 }
 
 bool Approach::onRun(HandoverContext& ctx) {
+  followPlan(ctx, ctrl(), hand_, standoff_);  // the best reachable target as the person moves
   if (withdrawn(ctx, hand_ ? ctx.in.hand : ctx.in.object)) {
     setOutput(withdrawn_);
     return true;
@@ -137,7 +139,7 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   }
   if (since_ < 0.0) since_ = ctx.time;
   if (ctx.time - since_ < hold_time_) return false;
-  ctrl().setPayload(ctx.object.mass, ctx.object.com_in_tcp);
+  ctrl().setPayload(ctx.object.mass, ctx.comInTcp());
   setOutput(released_);
   return true;
 }

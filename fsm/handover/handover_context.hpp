@@ -10,12 +10,46 @@
 
 namespace handover::fsm {
 
+/// A tracking target a state committed to: the planner's choice when it had
+/// one, else the declared one (the controller then resolves the free axis).
+struct TrackedChoice {
+  Isometry offset = Isometry::Identity();  ///< target frame in the observed frame
+  bool planned = false;
+  int index = -1;                           ///< the plan's candidate (-1: declared)
+  Vector7 q_target = Vector7::Zero();       ///< rad, posture reference at the target (planned only)
+  Vector7 q_pre = Vector7::Zero();          ///< rad, posture reference at the pre-target (planned only)
+
+  /// Takes `plan` when it is valid and a different candidate; true if it changed.
+  bool adopt(const TrackingPlan& plan) {
+    if (!plan.valid || (planned && plan.index == index)) return false;
+    offset = plan.target_in_observed;
+    planned = true;
+    index = plan.index;
+    q_target = plan.q_target;
+    q_pre = plan.q_pre;
+    return true;
+  }
+};
+
 struct HandoverContext : Context {
   HandoverInput in;                    ///< this cycle's inputs (sanitised)
   ObjectInfo object;                   ///< what the task knows about the object
   const HandoverParams* params = nullptr;
   CommandLedger* ledger = nullptr;
   HandoverStats stats;
+  PlannerInterface* planner = nullptr;  ///< optional (null: declared grasps and named poses only)
+
+  /// The grasp on the object the take tracks and, once closed, holds
+  /// (grasp frame in the object frame); starts as the declared grasp.
+  TrackedChoice grasp;
+  /// The give's TCP in the receiver's hand frame; starts as the declared
+  /// presentation (params.object_in_hand with the declared grasp).
+  TrackedChoice presentation;
+
+  /// Centre of mass of the object in the TCP frame, held with `grasp`, m.
+  Vector3 comInTcp() const {
+    return grasp.offset.inverse() * (object.grasp_in_object * object.com_in_tcp);
+  }
 
   Vector3 force = Vector3::Zero();               ///< low-pass filtered F/T force, world axes, N
   bool force_valid = false;                      ///< at least one finite sample filtered

@@ -50,6 +50,8 @@ HandoverFsm::HandoverFsm(const YamlReader& root, ControllerInterface& controller
   ctx_.params = &params_;
   ctx_.ledger = &ledger_;
   ctx_.object = object;
+  ctx_.grasp.offset = object.grasp_in_object;
+  ctx_.presentation.offset = params_.object_in_hand * object.grasp_in_object;
 }
 
 std::unique_ptr<HandoverFsm> HandoverFsm::fromFile(const std::string& path, ControllerInterface& controller,

@@ -34,6 +34,9 @@ class HandoverFsm {
   /// One control cycle: sanitises the inputs (non-finite values are dropped
   /// and counted), filters the wrist force, runs interrupts and states.
   void step(const HandoverInput& input);
+  /// The grasp planner the states consult (optional; must outlive the
+  /// machine). Without one they track the declared grasp and named poses.
+  void setPlanner(PlannerInterface* planner) { ctx_.planner = planner; }
   /// Tears down every active state (end of a run).
   void stop();
 

@@ -4,7 +4,7 @@
 // units; spatial velocities are [linear; angular] in world axes.
 #pragma once
 
-#include "fsm/handover/controller_interface.hpp"
+#include "fsm/handover/grasp_plan.hpp"
 
 namespace handover::fsm {
 
@@ -56,6 +56,10 @@ struct HandoverInput {
   Isometry target_pose = Isometry::Identity();
   Vector6 target_velocity = Vector6::Zero();
   bool holds_object = false;  ///< the controller believes the gripper holds the object
+
+  // grasp planning (the planner's latest choices; invalid without a planner)
+  TrackingPlan object_plan;  ///< grasp frame in the object frame (take)
+  TrackingPlan hand_plan;    ///< TCP in the receiver's hand frame (give)
 };
 
 /// What the task knows about the object (from the scenario), set once.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "fsm/handover/held_object_goal.hpp"
 #include "fsm/handover/perception_checks.hpp"
 #include "fsm/handover/tracking_setup.hpp"
 
@@ -17,14 +18,14 @@ void HoldReady::configure(const YamlReader& def) {
 void HoldReady::onStart(HandoverContext& ctx) {
   const HandoverParams& p = *ctx.params;
   ctrl().setGripper(p.gripper_close_width, p.gripper_force);  // keep the grip
-  if (!ctx.ledger->payloadSet()) ctrl().setPayload(ctx.object.mass, ctx.object.com_in_tcp);
+  if (!ctx.ledger->payloadSet()) ctrl().setPayload(ctx.object.mass, ctx.comInTcp());
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(ObservationTarget::kHand);
-  ctrl().setPoseTarget(p.ready_pose);
+  goal_ = carryHeldObject(ctx, ctrl(), p.ready_pose);
 }
 
 bool HoldReady::onRun(HandoverContext& ctx) {
-  if (positionError(ctx.in.tcp_pose, ctx.params->ready_pose) > pos_tol_ ||
+  if (positionError(ctx.in.tcp_pose, goal_) > pos_tol_ ||
       ctx.in.tcp_velocity.head<3>().norm() > settle_speed_) {
     return false;
   }

@@ -18,6 +18,7 @@ class HoldReady : public HandoverState {
  private:
   int ready_;
   double pos_tol_ = 0.03, settle_speed_ = 0.03;
+  Isometry goal_ = Isometry::Identity();  ///< the ready pose, or an upright placement of the object near it
 };
 
 /// [Presented, Withdrawn] Tracks the presentation frame (still relative to

@@ -68,6 +68,9 @@ static_assert(rowsInChannelOrder(), "row i is channel i");
 }  // namespace
 
 bool operator==(const PoseCommand& a, const PoseCommand& b) { return a.active == b.active && same(a.pose, b.pose); }
+bool operator==(const TrackingOffset& a, const TrackingOffset& b) {
+  return a.planned == b.planned && same(a.target_in_observed, b.target_in_observed);
+}
 bool operator==(const PostureCommand& a, const PostureCommand& b) { return a.active == b.active && a.q == b.q; }
 bool operator==(const GainsCommand& a, const GainsCommand& b) {
   return a.active == b.active && a.translation == b.translation && a.orientation == b.orientation;

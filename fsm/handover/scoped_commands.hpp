@@ -35,9 +35,11 @@ struct GainsCommand {
 
 /// Exact comparisons (a restored value is the very value saved).
 bool operator==(const PoseCommand& a, const PoseCommand& b);
+bool operator==(const TrackingOffset& a, const TrackingOffset& b);
 bool operator==(const PostureCommand& a, const PostureCommand& b);
 bool operator==(const GainsCommand& a, const GainsCommand& b);
 inline bool operator!=(const PoseCommand& a, const PoseCommand& b) { return !(a == b); }
+inline bool operator!=(const TrackingOffset& a, const TrackingOffset& b) { return !(a == b); }
 inline bool operator!=(const PostureCommand& a, const PostureCommand& b) { return !(a == b); }
 inline bool operator!=(const GainsCommand& a, const GainsCommand& b) { return !(a == b); }
 
@@ -46,7 +48,7 @@ inline bool operator!=(const GainsCommand& a, const GainsCommand& b) { return !(
 struct ScopedCommands {
   ObservationTarget observation = ObservationTarget::kNone;
   bool tracking = false;
-  Isometry tracking_offset = Isometry::Identity();  ///< target frame in the observed frame
+  TrackingOffset tracking_offset;  ///< target frame in the observed frame
   PoseCommand pose;
   PostureCommand posture;
   double speed_scale = 1.0;  ///< 0..1

@@ -6,25 +6,41 @@
 
 namespace handover::fsm {
 
-/// TCP pose in the hand frame that puts the object at params.object_in_hand.
-inline Isometry presentationOffset(const HandoverContext& ctx) {
-  return ctx.params->object_in_hand * ctx.object.grasp_in_object;
+/// The target a state tracks on the object (take) or on the hand (give).
+inline TrackedChoice& trackedChoice(HandoverContext& ctx, bool hand) { return hand ? ctx.presentation : ctx.grasp; }
+
+/// The planner's latest choice for the object (take) or the hand (give).
+inline const TrackingPlan& latestPlan(const HandoverContext& ctx, bool hand) {
+  return hand ? ctx.in.hand_plan : ctx.in.object_plan;
 }
 
 /// `standoff` (m) backs the tracked frame off along its own z axis (the
 /// gripper's approach axis): the gripper first lines up at a pre-grasp pose
 /// and then slides in along its fingers, instead of sweeping its fingertips
 /// over the object or the hand while it still turns.
+/// A planned target is tracked exactly, and the posture task's reference
+/// becomes its IK configuration (pre-target while backed off), so the QP's
+/// local motion leads to a configuration known to reach it instead of into
+/// a joint limit (redundancy resolution).
 inline void trackTarget(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double standoff = 0.0) {
   ctrl.setObservationTarget(hand ? ObservationTarget::kHand : ObservationTarget::kObject);
-  const Isometry target = hand ? presentationOffset(ctx) : ctx.object.grasp_in_object;
-  ctrl.setTrackingOffset(target * Eigen::Translation3d(0.0, 0.0, -standoff));
+  const TrackedChoice& c = trackedChoice(ctx, hand);
+  ctrl.setTrackingOffset(TrackingOffset{c.offset * Eigen::Translation3d(0.0, 0.0, -standoff), c.planned});
+  if (c.planned) ctrl.setPostureTarget(standoff > 0.0 ? c.q_pre : c.q_target);
   ctrl.clearPoseTarget();
   const HandoverParams& p = *ctx.params;
   if (p.tracking_translation_stiffness > 0.0 && p.tracking_orientation_stiffness > 0.0) {
     ctrl.setTrackingStiffness(p.tracking_translation_stiffness, p.tracking_orientation_stiffness);
   }
   ctrl.enableTracking(true);
+}
+
+/// While a state may still change its mind (approaching): follows the
+/// planner's choice when it switches. True if the target changed.
+inline bool followPlan(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double standoff = 0.0) {
+  if (!trackedChoice(ctx, hand).adopt(latestPlan(ctx, hand))) return false;
+  trackTarget(ctx, ctrl, hand, standoff);
+  return true;
 }
 
 }  // namespace handover::fsm

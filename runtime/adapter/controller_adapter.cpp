@@ -8,7 +8,7 @@ namespace handover::runtime {
 
 ControllerAdapter::ControllerAdapter(control::Controller& controller, perception::ObservationTarget& target,
                                      const control::GraspOffset& object_grasp, double open_width)
-    : controller_(controller), target_(target), object_grasp_(object_grasp), placement_(object_grasp.placement),
+    : controller_(controller), target_(target), object_grasp_(object_grasp), placement_{object_grasp.placement, false},
       open_width_(open_width), gripper_width_(open_width) {}
 
 void ControllerAdapter::setObservationTarget(fsm::ObservationTarget target) {
@@ -24,14 +24,15 @@ void ControllerAdapter::enableTracking(bool on) {
   controller_.setTaskEnabled("tracking", on);
 }
 
-void ControllerAdapter::setTrackingOffset(const fsm::Isometry& target_in_observed) {
-  placement_ = target_in_observed;
+void ControllerAdapter::setTrackingOffset(const fsm::TrackingOffset& offset) {
+  placement_ = offset;
   applyOffset();
 }
 
 void ControllerAdapter::applyOffset() {
   controller_.setGraspOffset(
-      makeTrackingOffset(placement_, object_grasp_, target_kind_ == fsm::ObservationTarget::kObject));
+      makeTrackingOffset(placement_.target_in_observed, object_grasp_,
+                         target_kind_ == fsm::ObservationTarget::kObject, placement_.planned));
 }
 
 void ControllerAdapter::setPoseTarget(const fsm::Isometry& tcp_in_world) {
@@ -62,7 +63,14 @@ void ControllerAdapter::clearTrackingStiffness() {
 }
 
 void ControllerAdapter::relaxHandClearance(bool relaxed) {
-  if (collision_ && hand_rule_ >= 0) collision_->setRuleEnabled(hand_rule_, !relaxed);
+  hand_relaxed_ = relaxed;
+  applyClearances();
+}
+
+void ControllerAdapter::applyClearances() {
+  if (collision_ == nullptr) return;
+  if (hand_rule_ >= 0) collision_->setRuleEnabled(hand_rule_, !hand_relaxed_);
+  if (object_rule_ >= 0) collision_->setRuleEnabled(object_rule_, !hand_relaxed_ && !payload_set_);
 }
 
 void ControllerAdapter::setGripper(double width, double force) {
@@ -76,11 +84,13 @@ void ControllerAdapter::setPayload(double mass, const fsm::Vector3& com_in_tcp) 
   p.com = com_in_tcp;
   controller_.setPayload(p);
   payload_set_ = true;
+  applyClearances();
 }
 
 void ControllerAdapter::clearPayload() {
   controller_.clearPayload();
   payload_set_ = false;
+  applyClearances();
 }
 
 }  // namespace handover::runtime

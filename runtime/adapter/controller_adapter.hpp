@@ -26,7 +26,7 @@ class ControllerAdapter : public fsm::ControllerInterface {
 
   void setObservationTarget(fsm::ObservationTarget target) override;
   void enableTracking(bool on) override;
-  void setTrackingOffset(const fsm::Isometry& target_in_observed) override;
+  void setTrackingOffset(const fsm::TrackingOffset& offset) override;
   void setPoseTarget(const fsm::Isometry& tcp_in_world) override;
   void clearPoseTarget() override;
   void setPostureTarget(const fsm::Vector7& q) override;
@@ -37,9 +37,13 @@ class ControllerAdapter : public fsm::ControllerInterface {
   void relaxHandClearance(bool relaxed) override;
   /// The collision constraint whose `hand_rule` (a pair-rule index) the
   /// state machine relaxes; none: relaxHandClearance does nothing.
-  void setCollision(control::CollisionConstraint* collision, int hand_rule) {
+  /// `object_rule` (gripper and the object the person holds) is on while
+  /// the gripper approaches: off with the hand rule and while a payload is set.
+  void setCollision(control::CollisionConstraint* collision, int hand_rule, int object_rule = -1) {
     collision_ = collision;
     hand_rule_ = hand_rule;
+    object_rule_ = object_rule;
+    applyClearances();
   }
   void setGripper(double width, double force) override;
   void setPayload(double mass, const fsm::Vector3& com_in_tcp) override;
@@ -52,14 +56,17 @@ class ControllerAdapter : public fsm::ControllerInterface {
   bool trackingEnabled() const { return tracking_on_; }
   double speedScale() const { return speed_scale_; }
   /// The tracking target in the observed frame, as last set.
-  const fsm::Isometry& trackingOffset() const { return placement_; }
+  const fsm::Isometry& trackingOffset() const { return placement_.target_in_observed; }
+  /// The tracking offset is a planned choice (tracked exactly).
+  bool trackingOffsetPlanned() const { return placement_.planned; }
 
  private:
   void applyOffset();
+  void applyClearances();
   control::Controller& controller_;
   perception::ObservationTarget& target_;
   control::GraspOffset object_grasp_;
-  fsm::Isometry placement_;  ///< tracking target in the observed frame
+  fsm::TrackingOffset placement_;  ///< tracking target in the observed frame
   fsm::ObservationTarget target_kind_ = fsm::ObservationTarget::kNone;
   double now_ = 0.0;
   bool tracking_on_ = false;
@@ -70,6 +77,8 @@ class ControllerAdapter : public fsm::ControllerInterface {
   double speed_scale_ = 1.0;
   control::CollisionConstraint* collision_ = nullptr;
   int hand_rule_ = -1;
+  int object_rule_ = -1;
+  bool hand_relaxed_ = false;
 };
 
 }  // namespace handover::runtime

@@ -3,9 +3,10 @@
 namespace handover::runtime {
 
 control::GraspOffset makeTrackingOffset(const control::Isometry& placement, const control::GraspOffset& object_grasp,
-                                    bool follows_object) {
+                                    bool follows_object, bool planned) {
   control::GraspOffset g;
   g.placement = placement;
+  if (planned) return g;
   g.has_free_axis = follows_object && object_grasp.has_free_axis;
   g.free_axis = object_grasp.free_axis;
   // a symmetric object is taken from the robot's side (the base is the world origin)

@@ -15,8 +15,10 @@ namespace handover::runtime {
 /// person's hand (false). An offset in the object's frame keeps the object's
 /// symmetry, is taken from the robot's side, and lets an empty parallel
 /// gripper take the object with either finger on either side; one in the
-/// hand's frame does none of these.
+/// hand's frame does none of these. `planned`: the placement is a choice the
+/// grasp planner already made with the robot's kinematics (turn about the
+/// free axis, twin): it is tracked exactly, none of these rules applies.
 control::GraspOffset makeTrackingOffset(const control::Isometry& placement, const control::GraspOffset& object_grasp,
-                                    bool follows_object);
+                                    bool follows_object, bool planned = false);
 
 }  // namespace handover::runtime

@@ -21,9 +21,11 @@ struct RecordingController : ControllerInterface {
   ObservationTarget observation = ObservationTarget::kNone;
   bool tracking = false;
   Isometry offset = Isometry::Identity();
+  bool offset_planned = false;
   bool pose_active = false;
   Isometry pose = Isometry::Identity();
   bool posture_active = false;
+  Vector7 posture = Vector7::Zero();
   double speed = 1.0;
   bool gains_active = false;     // values only (not in `calls`)
   bool hand_relaxed = false;     // values only (not in `calls`)
@@ -43,8 +45,9 @@ struct RecordingController : ControllerInterface {
     tracking = on;
     if (record) calls.push_back(on ? "tracking on" : "tracking off");
   }
-  void setTrackingOffset(const Isometry& o) override {
-    offset = o;
+  void setTrackingOffset(const TrackingOffset& o) override {
+    offset = o.target_in_observed;
+    offset_planned = o.planned;
     if (record) calls.push_back("offset");
   }
   void setPoseTarget(const Isometry& p) override {
@@ -56,8 +59,9 @@ struct RecordingController : ControllerInterface {
     pose_active = false;
     if (record) calls.push_back("clear pose");
   }
-  void setPostureTarget(const Vector7&) override {
+  void setPostureTarget(const Vector7& q) override {
     posture_active = true;
+    posture = q;
     if (record) calls.push_back("posture");
   }
   void clearPostureTarget() override {
@@ -114,6 +118,8 @@ struct World {
   bool dropout = false;     // perception sends nothing
   double last_sample = 0.0;
   bool hand_open = true;
+  TrackingPlan object_plan;  // what a grasp planner would report (invalid: none)
+  TrackingPlan hand_plan;
 
   World() {
     tcp.linear() = Eigen::Vector3d(1, -1, -1).asDiagonal();
@@ -206,6 +212,8 @@ struct World {
     in.target_velocity.head<3>() =
         c.observation == ObservationTarget::kHand ? hand_vel : in.object.velocity.head<3>().eval();
     in.holds_object = robot_carries;
+    in.object_plan = object_plan;
+    in.hand_plan = hand_plan;
     return in;
   }
 };

@@ -52,7 +52,7 @@ TEST(ControllerHandle, SecondChangeKeepsFirstSavedValue) {
   h.setPoseTarget(at(0.5));  // a second change of the same channel
   h.undo();
   EXPECT_FALSE(ledger.current().pose.active);
-  EXPECT_TRUE(ledger.current().tracking_offset.isApprox(Isometry::Identity()));
+  EXPECT_TRUE(ledger.current().tracking_offset.target_in_observed.isApprox(Isometry::Identity()));
 }
 
 TEST(ControllerHandle, EveryStateLeavesNothingBehind) {
@@ -67,7 +67,7 @@ TEST(ControllerHandle, EveryStateLeavesNothingBehind) {
   EXPECT_FALSE(cur.tracking);
   EXPECT_EQ(cur.observation, ObservationTarget::kNone);
   EXPECT_FALSE(cur.pose.active);
-  EXPECT_TRUE(cur.tracking_offset.isApprox(Isometry::Identity()));
+  EXPECT_TRUE(cur.tracking_offset.target_in_observed.isApprox(Isometry::Identity()));
   EXPECT_DOUBLE_EQ(cur.speed_scale, 1.0);
   // the controller saw the same
   EXPECT_FALSE(rig.ctl.tracking);
@@ -89,7 +89,7 @@ TEST(ControllerHandle, PreemptedPathLeavesOnlyTheStopsChanges) {
   // only the stop's own changes remain (tracking off, hold pose); the
   // grasp's observation target and offset are gone
   EXPECT_EQ(cur.observation, ObservationTarget::kNone);
-  EXPECT_TRUE(cur.tracking_offset.isApprox(Isometry::Identity()));
+  EXPECT_TRUE(cur.tracking_offset.target_in_observed.isApprox(Isometry::Identity()));
   EXPECT_FALSE(cur.tracking);
   EXPECT_TRUE(cur.pose.active);
 }

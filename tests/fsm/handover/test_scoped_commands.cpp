@@ -16,7 +16,8 @@ ScopedCommands allChanged() {
   ScopedCommands v;
   v.observation = ObservationTarget::kHand;
   v.tracking = true;
-  v.tracking_offset.translation() = Vector3(0.0, 0.0, -0.08);
+  v.tracking_offset.target_in_observed.translation() = Vector3(0.0, 0.0, -0.08);
+  v.tracking_offset.planned = true;
   v.pose.active = true;
   v.pose.pose.translation() = Vector3(0.4, 0.1, 0.3);
   v.posture.active = true;

@@ -1,0 +1,36 @@
+// Where to carry a held object: a named TCP pose (stow, safe, ready) assumes
+// the gripper points down, which tilts or hangs an object grasped from the
+// side and may be out of reach with it. With a planner, the goal becomes an
+// upright placement of the object near where the named pose would put it,
+// reached by a move in joint space to its IK configuration: the posture task
+// alone (pose task off) drives every joint along the same critically damped
+// profile, a straight line between two configurations within the limits,
+// so it stays within them. A TCP pose task toward the same goal would follow
+// the shortest turn of the gripper, which may run the wrist into its limit.
+// RT safe apart from the planner's search (about 1 ms, once per phase start).
+#pragma once
+
+#include "fsm/handover/handover_context.hpp"
+
+namespace handover::fsm {
+
+/// Sends the controller toward the goal for carrying the held object to
+/// `named` and returns the TCP pose it ends at: `named` through the pose
+/// task when there is no planner, the gripper holds nothing, or no upright
+/// placement was found; else the placement, in joint space.
+inline Isometry carryHeldObject(HandoverContext& ctx, ControllerHandle& ctrl, const Isometry& named) {
+  if (ctx.planner != nullptr && ctx.ledger->payloadSet()) {
+    const Isometry object_in_tcp = ctx.grasp.offset.inverse();
+    const Vector3 position = (named * object_in_tcp).translation();
+    const ArmPlacement placement = ctx.planner->uprightPlacement(object_in_tcp, position, ctx.in.q);
+    if (placement.found) {
+      ctrl.clearPoseTarget();
+      ctrl.setPostureTarget(placement.q);
+      return placement.tcp;
+    }
+  }
+  ctrl.setPoseTarget(named);
+  return named;
+}
+
+}  // namespace handover::fsm

@@ -1,0 +1,75 @@
+// The grasp planner of the handover cycle: grasp selection and upright
+// placement (control/grasp) on the robot's own model, fed by perception and
+// read by the state machine (fsm::TrackingPlan in its input, and
+// fsm::PlannerInterface for placements when a phase starts).
+//
+// Take: while the person holds the object, each new object sample re-selects
+// among the grasps the object admits (declared grasps, every turn about a
+// free axis, the gripper's half-turn twins) the one the arm reaches best,
+// avoiding the person's forearm and upper arm.
+// Give: while the robot holds the object, each new hand sample re-selects the
+// presentation: the declared TCP-in-hand frame turned about the hand's z axis
+// (the receiver takes the object at any turn about the vertical), no twins
+// (the held object would turn with the gripper).
+//
+// Frames: world; offsets in the observed frame (object or hand). Units: m, rad.
+// Real-time: the constructor allocates; update() and uprightPlacement() do
+// not, but cost 0.1-1 ms (IK solves): run them at the sensor rate or when a
+// phase starts, outside the 1 ms control step (HandoverCycle::plan).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "control/grasp/grasp_selector.hpp"
+#include "fsm/handover/grasp_plan.hpp"
+#include "perception/perception_estimator.hpp"
+
+namespace handover::runtime {
+
+struct GraspPlanningSettings {
+  control::grasp::GraspSelectionConfig config;        ///< config/grasp_selection.yaml
+  std::vector<control::grasp::GraspSpec> object_grasps;  ///< what the object admits (at least one)
+  control::Isometry presentation = control::Isometry::Identity();  ///< declared TCP pose in the receiver's hand frame
+  control::Vector3 up_axis = control::Vector3::UnitZ();  ///< object frame: the axis kept vertical when carried
+  double forearm_length = 0.27, upper_arm_length = 0.33;  ///< m, the person's arm capsules
+  double forearm_radius = 0.045, upper_arm_radius = 0.055;  ///< m
+  double hand_radius = 0.05;  ///< m, a sphere around the grip point (take: grasp away from the hand)
+};
+
+class GraspPlanning : public fsm::PlannerInterface {
+ public:
+  /// Throws std::invalid_argument without object grasps; `model` must outlive it.
+  GraspPlanning(const control::Model& model, const GraspPlanningSettings& settings);
+
+  /// Re-selects on a new sample (take: the object while the person holds
+  /// it; give: the hand while the robot holds the object); q: the arm now.
+  void update(const perception::PerceptionEstimate& estimate, const control::Vector7& q, bool robot_holds);
+  /// Forgets both choices (a new object, a new run).
+  void reset();
+
+  const fsm::TrackingPlan& objectPlan() const { return object_plan_; }
+  const fsm::TrackingPlan& handPlan() const { return hand_plan_; }
+  const control::grasp::GraspSelector& objectSelector() const { return object_; }
+
+  fsm::ArmPlacement uprightPlacement(const control::Isometry& object_in_tcp, const control::Vector3& object_position,
+                                     const control::Vector7& q_now) override;
+
+ private:
+  static void copyChoice(const control::grasp::GraspChoice& c, fsm::TrackingPlan& plan);
+  /// Fills obstacles_ with the person's arm (and hand); returns their number.
+  int personObstacles(const perception::HumanEstimate& human, bool with_hand);
+
+  const control::Model& model_;
+  GraspPlanningSettings settings_;
+  control::grasp::GraspSelector object_;
+  control::grasp::GraspSelector hand_;
+  fsm::TrackingPlan object_plan_, hand_plan_;
+  double object_stamp_ = -1.0, hand_stamp_ = -1.0;
+  control::grasp::ObstacleCapsule obstacles_[3];
+};
+
+/// The presentation selector's options: no twins (a held object turns with the gripper).
+control::grasp::GraspSelectionConfig presentationSelectionConfig(control::grasp::GraspSelectionConfig config);
+
+}  // namespace handover::runtime
