@@ -119,7 +119,12 @@ bool Grasp::onRun(HandoverContext& ctx) {
 WaitForRelease::WaitForRelease() : released_(declareOutput("Released")) {}
 
 void WaitForRelease::configure(const YamlReader& def) {
-  fraction_ = readPositive(def, "release_fraction", 2.0);
+  if (def.has("release_share")) {
+    share_ = readRange(def, "release_share", 0.05, 1.0);
+    if (def.has("release_fraction")) def.child("release_fraction").fail("give release_share or release_fraction, not both");
+  } else {
+    fraction_ = readPositive(def, "release_fraction", 2.0);
+  }
   hold_time_ = readRange(def, "hold_time", 0.0, 5.0);
 }
 
@@ -131,7 +136,9 @@ void WaitForRelease::onStart(HandoverContext& ctx) {
 
 bool WaitForRelease::onRun(HandoverContext& ctx) {
   const double weight = ctx.object.mass * ctx.params->gravity;
-  if (ctx.addedWeight(ctx.force_before_grasp) < fraction_ * weight) {
+  const bool carries = share_ >= 0.0 ? ctx.in.load_share >= share_
+                                     : ctx.addedWeight(ctx.force_before_grasp) >= fraction_ * weight;
+  if (!carries) {
     since_ = -1.0;
     return false;
   }

@@ -69,10 +69,12 @@ class Grasp : public HandoverState {
   double last_width_ = 0.0, last_time_ = 0.0, finger_speed_ = 0.0;
 };
 
-/// [Released] Follows the grasp frame until the person lets go: the filtered
-/// world force has gained at least release_fraction * m g along gravity since
-/// the grasp, for hold_time; then sets the payload.
-/// Keys: release_fraction (0..2), hold_time (s).
+/// [Released] Follows the grasp frame until the person lets go, for
+/// hold_time: the robot's load share (HandoverInput::load_share) reaches
+/// release_share, or, without that key, the filtered world force has gained
+/// at least release_fraction * m g along gravity since the grasp. Then sets
+/// the payload (the robot holds the object).
+/// Keys: release_share (0..1) or release_fraction (0..2), hold_time (s).
 class WaitForRelease : public HandoverState {
  public:
   WaitForRelease();
@@ -83,6 +85,7 @@ class WaitForRelease : public HandoverState {
  private:
   int released_;
   double fraction_ = 0.7, hold_time_ = 0.1;
+  double share_ = -1.0;  ///< release_share; < 0: the force rule
   double since_ = -1.0;
 };
 

@@ -77,6 +77,10 @@ void HandoverFsm::sanitise(const HandoverInput& in) {
     ctx_.in.qd = previous.qd;
     bad = true;
   }
+  if (!std::isfinite(in.load_share)) {
+    ctx_.in.load_share = previous.load_share;
+    bad = true;
+  }
   if (!std::isfinite(in.finger_width)) {
     ctx_.in.finger_width = previous.finger_width;
     bad = true;
