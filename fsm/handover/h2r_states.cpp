@@ -98,7 +98,7 @@ bool Grasp::onRun(HandoverContext& ctx) {
     }
     if (!alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_)) return false;
     ctx.force_before_grasp = ctx.force;  // reference for the release test
-    ctrl().setGripper(ctx.params->gripper_close_width, ctx.params->gripper_force);
+    ctrl().setGripper(ctx.params->gripper_close_width, ctx.params->gripForce(ctx.object.mass));
     closing_ = true;
     closed_at_ = last_time_ = ctx.time;
     last_width_ = ctx.in.finger_width;
@@ -131,6 +131,7 @@ void WaitForRelease::configure(const YamlReader& def) {
 void WaitForRelease::onStart(HandoverContext& ctx) {
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   since_ = -1.0;
+  holding_ = false;
   trackTarget(ctx, ctrl(), false);  // follow the object while the person still holds it
 }
 
@@ -139,10 +140,19 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   const bool carries = share_ >= 0.0 ? ctx.in.load_share >= share_
                                      : ctx.addedWeight(ctx.force_before_grasp) >= fraction_ * weight;
   if (!carries) {
+    if (holding_) trackTarget(ctx, ctrl(), false);  // the person took it back: follow again
+    holding_ = false;
     since_ = -1.0;
     return false;
   }
   if (since_ < 0.0) since_ = ctx.time;
+  if (!holding_ && share_ >= 0.0) {
+    // the robot carries it: stop following the object's estimate, which still
+    // moves with the person's (leaving) hand until the release is confirmed
+    ctrl().enableTracking(false);
+    ctrl().setPoseTarget(ctx.in.tcp_pose);
+    holding_ = true;
+  }
   if (ctx.time - since_ < hold_time_) return false;
   ctrl().setPayload(ctx.object.mass, ctx.object.com_in_tcp);
   setOutput(released_);

@@ -73,7 +73,9 @@ class Grasp : public HandoverState {
 /// hold_time: the robot's load share (HandoverInput::load_share) reaches
 /// release_share, or, without that key, the filtered world force has gained
 /// at least release_fraction * m g along gravity since the grasp. Then sets
-/// the payload (the robot holds the object).
+/// the payload (the robot holds the object). With release_share, the TCP is
+/// held still while the share is reached (the object estimate still follows
+/// the person's hand until the release is confirmed).
 /// Keys: release_share (0..1) or release_fraction (0..2), hold_time (s).
 class WaitForRelease : public HandoverState {
  public:
@@ -86,6 +88,7 @@ class WaitForRelease : public HandoverState {
   int released_;
   double fraction_ = 0.7, hold_time_ = 0.1;
   double share_ = -1.0;  ///< release_share; < 0: the force rule
+  bool holding_ = false; ///< the robot carries the load: holding the TCP, not following
   double since_ = -1.0;
 };
 

@@ -6,6 +6,7 @@
 
 #include "fsm/handover/common_states.hpp"
 #include "fsm/handover/h2r_states.hpp"
+#include "fsm/handover/object_lost.hpp"
 #include "fsm/handover/r2h_states.hpp"
 #include "fsm/handover/safety.hpp"
 
@@ -30,6 +31,7 @@ void registerHandoverTypes(Registry& r) {
   r.addState<SafetyStop>("SafetyStop");
   r.addState<SlowDown>("SlowDown");
   r.addCondition<HumanTooClose>("HumanTooClose");
+  r.addCondition<ObjectLost>("ObjectLost");
 }
 
 namespace {
