@@ -32,7 +32,7 @@ namespace handover::control {
 
 /// config/controller.yaml `contact_wrench`.
 struct ContactWrenchSettings {
-  bool feed_forward = true;       ///< hand the feed-forward to the dynamics (false: estimate and log only)
+  bool feed_forward = false;      ///< hand the rest of the load to the dynamics (off: estimate and log only; docs/method.md)
   double filter_tau = 0.01;       ///< s, low-pass time constant of the load
   double calibration_time = 0.2;  ///< s of readings at rest that calibrate the sensor offset
   double rest_speed = 0.02;       ///< rad/s, joint speed norm below which the arm is at rest

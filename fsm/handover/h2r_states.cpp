@@ -122,8 +122,10 @@ void WaitForRelease::configure(const YamlReader& def) {
   if (def.has("release_share")) {
     share_ = readRange(def, "release_share", 0.05, 1.0);
     if (def.has("release_fraction")) def.child("release_fraction").fail("give release_share or release_fraction, not both");
-  } else {
+  } else if (def.has("release_fraction")) {
     fraction_ = readPositive(def, "release_fraction", 2.0);
+  } else {
+    def.fail("needs release_share (the robot's load share, 0..1) or release_fraction (of m g)");
   }
   hold_time_ = readRange(def, "hold_time", 0.0, 5.0);
 }

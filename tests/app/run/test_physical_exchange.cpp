@@ -41,7 +41,7 @@ app::RunSummary runWithMass(const ScratchDir& dir, const std::string& name, doub
 }
 
 TEST(PhysicalExchange, OneKilogramDoesNotSinkWhenThePersonLetsGo) {
-  ScratchDir dir;
+  ScratchDir dir("exchange_release");
   CsvTable log;
   const app::RunSummary s = runWithMass(dir, "default", 1.0, log);
   EXPECT_EQ(s.outcome, "success");
@@ -69,7 +69,7 @@ TEST(PhysicalExchange, OneKilogramDoesNotSinkWhenThePersonLetsGo) {
 }
 
 TEST(PhysicalExchange, OneKilogramIsHeldStillWhileTheReceiverPulls) {
-  ScratchDir dir;
+  ScratchDir dir("exchange_pull");
   CsvTable log;
   const app::RunSummary s = runWithMass(dir, "r2h_basic", 1.0, log);
   EXPECT_EQ(s.outcome, "success");
