@@ -10,6 +10,15 @@ the pull's onset (the person's hand, at rest once the robot waits for the
 pull, moves by 2 mm) and the fingers opening past the object, and within the
 0.5 s after that.
 
+The sink counts every drop, including the Retract's own descent toward a
+stow pose lower than the grasp. "beyond the retract" removes that: the
+Retract's pose task is a critically damped PD toward the stow pose (stiffness
+of config/controller.yaml pose_task.translation, stow of config/fsm.yaml),
+so its planned height from the Retract's start is
+z_s + (e0 + (v0 + w e0) t) exp(-w t), w = sqrt(K), e0, v0 the TCP's height
+error and vertical speed then; the object's drop minus the planned drop is
+what the arm did not mean to do (sagging, slipping, or not reaching the plan).
+
 usage: exchange_sink.py RUN_DIR_OR_LOG...   (a batch's runs/ folder works too)
 """
 import csv
@@ -18,6 +27,19 @@ import math
 import os
 import statistics
 import sys
+
+import yaml
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def retract_plan():
+    """(stow TCP height m, pose-task stiffness 1/s^2) from the shipped configs."""
+    with open(os.path.join(ROOT, "config", "fsm.yaml")) as f:
+        stow_z = yaml.safe_load(f)["params"]["poses"]["stow"]["pos"][2]
+    with open(os.path.join(ROOT, "config", "controller.yaml")) as f:
+        k = yaml.safe_load(f)["pose_task"]["translation"]["stiffness"]
+    return stow_z, k
 
 
 def load(path):
@@ -39,6 +61,8 @@ def h2r_sink(rows, window=1.0, moved=0.01):
     cmd = col(rows, "gripper_cmd")
     hand = list(zip(col(rows, "hand_x"), col(rows, "hand_y"), col(rows, "hand_z")))
     obj = list(zip(col(rows, "object_x"), col(rows, "object_y"), col(rows, "object_z")))
+    tcp_z = col(rows, "tcp_z")
+    states = [r["state"] for r in rows]
     open_w = max(cmd)
     close = next((i for i in range(len(t)) if cmd[i] < 0.5 * open_w and i > 0), None)
     if close is None:
@@ -50,8 +74,21 @@ def h2r_sink(rows, window=1.0, moved=0.01):
         rel = [h - o for h, o in zip(hand[i], obj[i])]
         if dist(rel, rel0) > moved:
             z0 = obj[i][2]
-            zmin = min(obj[k][2] for k in range(i, len(t)) if t[k] <= t[i] + window)
-            return {"release_time": t[i], "sink": z0 - zmin}
+            window_rows = [k for k in range(i, len(t)) if t[k] <= t[i] + window]
+            zmin = min(obj[k][2] for k in window_rows)
+            # the Retract's planned height (see the module doc)
+            stow_z, stiffness = retract_plan()
+            w = math.sqrt(stiffness)
+            r0 = next((k for k in range(close, len(t)) if states[k].endswith("/Retract")), None)
+            def planned(k):
+                if r0 is None or k < r0:
+                    return tcp_z[k if r0 is None else r0] if r0 is not None else tcp_z[i]
+                e0 = tcp_z[r0] - stow_z
+                v0 = (tcp_z[r0] - tcp_z[r0 - 1]) / (t[r0] - t[r0 - 1]) if r0 > 0 else 0.0
+                tau = t[k] - t[r0]
+                return stow_z + (e0 + (v0 + w * e0) * tau) * math.exp(-w * tau)
+            beyond = max((z0 - obj[k][2]) - (planned(i) - planned(k)) for k in window_rows)
+            return {"release_time": t[i], "sink": z0 - zmin, "beyond": max(0.0, beyond)}
     return None
 
 
@@ -84,7 +121,7 @@ def main(args):
             logs += sorted(glob.glob(os.path.join(a, "**", "log.csv"), recursive=True))
         else:
             logs.append(a)
-    sinks, pulls = [], []
+    sinks, beyond, pulls = [], [], []
     for p in logs:
         rows = load(p)
         if not rows:
@@ -101,9 +138,12 @@ def main(args):
             r = h2r_sink(rows)
             if r:
                 sinks.append(r["sink"])
-                print(f"{name:55s} sink {1000 * r['sink']:7.1f} mm at {r['release_time']:.2f} s")
+                beyond.append(r["beyond"])
+                print(f"{name:55s} sink {1000 * r['sink']:7.1f} mm at {r['release_time']:.2f} s"
+                      f" (beyond the retract's planned descent: {1000 * r['beyond']:.1f} mm)")
     if sinks:
-        print(f"h2r releases: {len(sinks)}  sink median {1000 * statistics.median(sinks):.1f} mm  worst {1000 * max(sinks):.1f} mm")
+        print(f"h2r releases: {len(sinks)}  sink median {1000 * statistics.median(sinks):.1f} mm  worst {1000 * max(sinks):.1f} mm"
+              f"; beyond the retract's plan: median {1000 * statistics.median(beyond):.1f} mm  worst {1000 * max(beyond):.1f} mm")
     if pulls:
         print(f"r2h pulls: {len(pulls)}  tcp move median {1000 * statistics.median(pulls):.1f} mm  worst {1000 * max(pulls):.1f} mm")
 
