@@ -121,6 +121,7 @@ WaitForRelease::WaitForRelease() : released_(declareOutput("Released")) {}
 void WaitForRelease::configure(const YamlReader& def) {
   if (def.has("release_share")) {
     share_ = readRange(def, "release_share", 0.05, 1.0);
+    distance_ = readRange(def, "release_distance", 0.0, 0.3);
     if (def.has("release_fraction")) def.child("release_fraction").fail("give release_share or release_fraction, not both");
   } else if (def.has("release_fraction")) {
     fraction_ = readPositive(def, "release_fraction", 2.0);
@@ -134,10 +135,14 @@ void WaitForRelease::onStart(HandoverContext& ctx) {
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   since_ = -1.0;
   holding_ = false;
+  hand_start_ = -1.0;
   trackTarget(ctx, ctrl(), false);  // follow the object while the person still holds it
 }
 
 bool WaitForRelease::onRun(HandoverContext& ctx) {
+  const bool hand_seen = fresh(ctx.in.hand, ctx.params->max_data_age);
+  const double hand_tcp = positionError(ctx.in.hand.pose, ctx.in.tcp_pose);
+  if (hand_seen && hand_start_ < 0.0) hand_start_ = hand_tcp;
   const double weight = ctx.object.mass * ctx.params->gravity;
   const bool carries = share_ >= 0.0 ? ctx.in.load_share >= share_
                                      : ctx.addedWeight(ctx.force_before_grasp) >= fraction_ * weight;
@@ -154,6 +159,10 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
     ctrl().enableTracking(false);
     ctrl().setPoseTarget(ctx.in.tcp_pose);
     holding_ = true;
+  }
+  if (share_ >= 0.0 && hand_seen && hand_tcp - hand_start_ < distance_) {
+    since_ = -1.0;  // the person's hand is still on it
+    return false;
   }
   if (ctx.time - since_ < hold_time_) return false;
   ctrl().setPayload(ctx.object.mass, ctx.object.com_in_tcp);

@@ -71,12 +71,19 @@ class Grasp : public HandoverState {
 
 /// [Released] Follows the grasp frame until the person lets go, for
 /// hold_time: the robot's load share (HandoverInput::load_share) reaches
-/// release_share, or, without that key, the filtered world force has gained
-/// at least release_fraction * m g along gravity since the grasp. Then sets
-/// the payload (the robot holds the object). With release_share, the TCP is
-/// held still while the share is reached (the object estimate still follows
-/// the person's hand until the release is confirmed).
-/// Keys: release_share (0..1) or release_fraction (0..2), hold_time (s).
+/// release_share and the person's hand has moved release_distance farther
+/// from the TCP than when the state started (a stale hand: the share alone),
+/// or, without release_share, the filtered world force has gained at least
+/// release_fraction * m g along gravity since the grasp. Then sets the
+/// payload (the robot holds the object).
+/// Why both: while the person's grip is rigid the load on the wrist is
+/// whatever the robot pushes (the load share follows the robot's own
+/// payload), so the load alone cannot tell that the person let go; the hand
+/// leaving can. With release_share, the TCP is held still from the moment
+/// the robot carries the load (the object estimate still follows the
+/// person's hand until the release is confirmed).
+/// Keys: release_share (0..1) with release_distance (m), or release_fraction
+/// (0..2); hold_time (s).
 class WaitForRelease : public HandoverState {
  public:
   WaitForRelease();
@@ -89,6 +96,8 @@ class WaitForRelease : public HandoverState {
   double fraction_ = 0.7, hold_time_ = 0.1;
   double share_ = -1.0;  ///< release_share; < 0: the force rule
   bool holding_ = false; ///< the robot carries the load: holding the TCP, not following
+  double distance_ = 0.0;   ///< release_distance, m
+  double hand_start_ = -1.0;  ///< m, hand to TCP when first seen in this state; < 0: not yet
   double since_ = -1.0;
 };
 
