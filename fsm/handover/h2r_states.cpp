@@ -122,6 +122,7 @@ void WaitForRelease::configure(const YamlReader& def) {
   if (def.has("release_share")) {
     share_ = readRange(def, "release_share", 0.05, 1.0);
     distance_ = readRange(def, "release_distance", 0.0, 0.3);
+    wait_ = readRange(def, "release_wait", 0.0, 60.0);
     if (def.has("release_fraction")) def.child("release_fraction").fail("give release_share or release_fraction, not both");
   } else if (def.has("release_fraction")) {
     fraction_ = readPositive(def, "release_fraction", 2.0);
@@ -136,6 +137,7 @@ void WaitForRelease::onStart(HandoverContext& ctx) {
   since_ = -1.0;
   holding_ = false;
   hand_start_ = -1.0;
+  carry_since_ = -1.0;
   trackTarget(ctx, ctrl(), false);  // follow the object while the person still holds it
 }
 
@@ -149,10 +151,11 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   if (!carries) {
     if (holding_) trackTarget(ctx, ctrl(), false);  // the person took it back: follow again
     holding_ = false;
-    since_ = -1.0;
+    since_ = carry_since_ = -1.0;
     return false;
   }
   if (since_ < 0.0) since_ = ctx.time;
+  if (carry_since_ < 0.0) carry_since_ = ctx.time;
   if (!holding_ && share_ >= 0.0) {
     // the robot carries it: stop following the object's estimate, which still
     // moves with the person's (leaving) hand until the release is confirmed
@@ -160,8 +163,9 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
     ctrl().setPoseTarget(ctx.in.tcp_pose);
     holding_ = true;
   }
-  if (share_ >= 0.0 && hand_seen && hand_tcp - hand_start_ < distance_) {
-    since_ = -1.0;  // the person's hand is still on it
+  // the person's hand is still on it; after release_wait with the whole load, let it be
+  if (share_ >= 0.0 && hand_seen && hand_tcp - hand_start_ < distance_ && ctx.time - carry_since_ < wait_) {
+    since_ = -1.0;
     return false;
   }
   if (ctx.time - since_ < hold_time_) return false;

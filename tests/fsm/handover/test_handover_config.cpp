@@ -52,7 +52,7 @@ TEST(HandoverConfig, TypoInStateKey) {
   std::string msg = loadError(bad);
   EXPECT_NE(msg.find("fsm.yaml:" + std::to_string(lineOf(bad, "release_shrae"))), std::string::npos) << msg;
   EXPECT_NE(msg.find("needs release_share"), std::string::npos) << msg;
-  bad = replaced(shipped(), "release_distance: 0.015, hold_time: 0.05", "release_distance: 0.015, hold_tiem: 0.05");
+  bad = replaced(shipped(), "release_wait: 3.5, hold_time: 0.05", "release_wait: 3.5, hold_tiem: 0.05");
   msg = loadError(bad);
   EXPECT_NE(msg.find("fsm.yaml:" + std::to_string(lineOf(bad, "hold_tiem"))), std::string::npos) << msg;
   EXPECT_NE(msg.find("WaitForRelease': missing required key 'hold_time'"), std::string::npos) << msg;
