@@ -33,6 +33,7 @@ Controller::Controller(Model model, const ControllerConfig& config, std::unique_
   solver_->setOptions(options);
 
   tcp_id_ = model_.frameId(config_.frame);
+  ft_id_ = model_.frameId("ft_sensor");
   const auto& c = config_;
   observation_ = std::make_shared<ObservationTask>("observation", c.observation.gains, c.observation.gains);
   tracking_ = std::make_shared<TrajectoryTrackingTask>(model_, "tracking", c.frame, c.tracking.translation.gains,
@@ -82,6 +83,9 @@ void Controller::reset(const ControlInputs& in) {
   solver_->resetWarmStart();
   qdd_.setZero();
   tau_ = data_.h;
+  external_wrench_.setZero();
+  tau_external_.setZero();
+  frameJacobian(model_, data_, ft_id_, J_ft_);
   status_ = QpStatus::kOptimal;
   iterations_ = 0;
   fell_back_ = false;
@@ -96,6 +100,7 @@ ControlContext Controller::context(double time) const {
   ctx.time = time;
   ctx.dt = config_.period;
   ctx.observed = integrator_.state();
+  ctx.tau_external = tau_external_;
   return ctx;
 }
 
@@ -112,6 +117,8 @@ const Vector7& Controller::step(const ControlInputs& in) {
 
   // compute once, then tasks and constraints only read
   computeAll(model_, data_, in.q, in.qd);
+  frameJacobian(model_, data_, ft_id_, J_ft_);
+  tau_external_.noalias() = J_ft_.transpose() * external_wrench_;
   const ControlContext ctx = context(in.time);
   formulation_.build(ctx, problem_);
 
@@ -125,7 +132,7 @@ const Vector7& Controller::step(const ControlInputs& in) {
   qdd_ = x_.head<kArmDofs>();
   integrator_.integrate(x_.segment<kObjDofs>(VariableLayout::kObs), config_.period);
   tau_.noalias() = data_.M * qdd_;
-  tau_ += data_.h;
+  tau_ += data_.h - tau_external_;
   return tau_;
 }
 
@@ -138,7 +145,7 @@ void Controller::fallback(const char* why) {
   const Vector7 a_lim = config_.limits.acceleration_scale * model_.a_max;
   qdd_ = (-config_.fallback.damping * data_.v).cwiseMax(-a_lim).cwiseMin(a_lim);
   tau_.noalias() = data_.M * qdd_;
-  tau_ += data_.h;
+  tau_ += data_.h - tau_external_;
   const Vector7 t_lim = config_.limits.torque_scale * model_.tau_max;
   tau_ = tau_.cwiseMax(-t_lim).cwiseMin(t_lim);
 
@@ -190,6 +197,14 @@ bool Controller::setConstraintEnabled(const std::string& name, bool enabled) {
 void Controller::setPayload(const Payload& payload) { control::setPayload(model_, data_, payload); }
 
 void Controller::clearPayload() { control::clearPayload(model_, data_); }
+
+void Controller::setExternalWrench(const Vector6& wrench) {
+  if (wrench.allFinite()) external_wrench_ = wrench;
+}
+
+Vector3 Controller::sensorAcceleration() const {
+  return frameDrift(model_, data_, ft_id_).head<3>() + J_ft_.topRows<3>() * qdd_;
+}
 
 void Controller::setSpeedScale(double s) {
   if (!std::isfinite(s)) return;

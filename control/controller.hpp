@@ -2,7 +2,8 @@
 //
 //   computeAll(q, qdot) -> tasks and constraints fill one QP over
 //   chi = [qddot (7); alphadot_obs (6)] -> solve -> integrate the observed
-//   object with alphadot_obs -> tau = M qddot + h (payload included).
+//   object with alphadot_obs -> tau = M qddot + h - J_ft^T f (payload included;
+//   f the known external wrench at the wrist sensor, setExternalWrench).
 //
 // Tasks (names): "observation", "tracking", "posture", "pose" (disabled at
 // start). Keep "observation" on whenever "tracking" is on: the tracking rows
@@ -74,6 +75,15 @@ class Controller {
   void setPostureTarget(const Vector7& q_ref) { posture_->setTarget(q_ref); }
   void setPayload(const Payload& payload);
   void clearPayload();
+  /// The known external wrench f on the robot at the "ft_sensor" origin,
+  /// [force (N); torque (N m)] in world axes (ContactWrenchEstimator::
+  /// feedForward): the dynamics hold it, tau = M qddot + h - J_ft^T f, from
+  /// the next step on. Non-finite input is ignored (the last value is kept).
+  void setExternalWrench(const Vector6& wrench);
+  const Vector6& externalWrench() const { return external_wrench_; }
+  /// Linear acceleration of the "ft_sensor" origin (world, m/s^2) the last
+  /// step commanded: J qddot + Jdot qdot at its state.
+  Vector3 sensorAcceleration() const;
   /// Scales the joint velocity limits by s in (0, 1] (clamped).
   void setSpeedScale(double s);
 
@@ -124,6 +134,10 @@ class Controller {
   QpProblem problem_;
   std::unique_ptr<QpSolver> solver_;
   int tcp_id_ = 0;
+  int ft_id_ = 0;
+  Vector6 external_wrench_ = Vector6::Zero();
+  Vector7 tau_external_ = Vector7::Zero();
+  Matrix6x7 J_ft_ = Matrix6x7::Zero();
 
   std::shared_ptr<ObservationTask> observation_;
   std::shared_ptr<TrajectoryTrackingTask> tracking_;

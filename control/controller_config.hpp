@@ -9,6 +9,7 @@
 #include "config/yaml_reader.hpp"
 #include "control/constraints/joint_position_limit.hpp"
 #include "control/tasks/pd_gains.hpp"
+#include "control/wrench/contact_wrench.hpp"
 #include "control/types.hpp"
 
 namespace handover::control {
@@ -58,6 +59,9 @@ struct ControllerConfig {
     double regularisation = 1e-3;  ///< must stay well above 1e-13 x the largest weight (solver pivot test)
     int max_iterations = 1000;
   } qp;
+
+  /// The wrist force-torque sensor's load in the dynamics (contact_wrench.hpp).
+  ContactWrenchSettings contact_wrench;
 
   struct Fallback {
     double damping = 20.0;  ///< kd of the damped stop qddot = -kd qdot, 1/s

@@ -24,6 +24,7 @@ CycleSettings defaultCycleSettings() {
   const fsm::HandoverParams fp = fsm::loadHandoverParams(YamlReader::loadFile(s.fsm_config_path).child("params"));
   s.gripper_open_width = fp.gripper_open_width;
   s.gripper_force = fp.gripper_force;
+  s.ft_gravity_sign = fp.ft_gravity_sign;
   const perception::PerceptionConfig p = perception::loadPerceptionConfig(perception::defaultPerceptionConfigPath());
   s.estimator.max_age = p.max_age;
   s.estimator.smoothing_time = p.smoothing_time;
@@ -41,7 +42,8 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
       estimator_(settings.estimator),
       obs_target_(settings.target),
       adapter_(controller_, obs_target_, settings.object_grasp, settings.gripper_open_width),
-      tcp_T_object_(settings.object.grasp_in_object.inverse()) {
+      tcp_T_object_(settings.object.grasp_in_object.inverse()),
+      contact_(controller_.model(), settings.controller.contact_wrench, settings.controller.period) {
   controller_.formulation().addConstraint(collision_);
   hand_rule_ = collision_->collisionModel().ruleIndex("person_hand_gripper");
   adapter_.setCollision(collision_.get(), hand_rule_, collision_->collisionModel().ruleIndex("object_gripper"));
@@ -69,7 +71,7 @@ void HandoverCycle::plan() {
 
 void HandoverCycle::start(const io::ArmState& arm, bool holds_object) {
   if (holds_object) {
-    adapter_.setGripper(0.0, settings_.gripper_force);
+    adapter_.setGripper(0.0, machine_->params().gripForce(settings_.object.mass));
     adapter_.setPayload(settings_.object.mass, settings_.object.com_in_tcp);
   } else {
     adapter_.setGripper(settings_.gripper_open_width, settings_.gripper_force);
@@ -78,6 +80,11 @@ void HandoverCycle::start(const io::ArmState& arm, bool holds_object) {
   control_in_.q = arm.q;
   control_in_.qd.setZero();
   controller_.reset(control_in_);
+  control::Payload object;
+  object.mass = settings_.object.mass;
+  object.com = settings_.object.com_in_tcp;
+  contact_.start(object, holds_object);
+  controller_.setPayload(contact_.payload());
 }
 
 const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, perception::PoseSource& source) {
@@ -119,6 +126,21 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   env.object_velocity = object_vel_.velocity();
   collision_->setEnvironment(env);
 
+  // 6b. the wrist load: the share the robot carries goes into the model, the rest is a known wrench
+  control::ContactWrenchInput cw;
+  cw.reading = -settings_.ft_gravity_sign * arm.wrench;
+  cw.sensor_rotation = input_.ft_rotation;
+  cw.sensor_acceleration = controller_.sensorAcceleration();
+  cw.at_rest = arm.qd.norm() < settings_.controller.contact_wrench.rest_speed;
+  cw.gripper_closed = adapter_.gripperWidth() < 0.5 * settings_.gripper_open_width;
+  control::Payload object;
+  object.mass = settings_.object.mass;
+  object.com = machine_->context().comInTcp();  // the grasp the state machine tracks or closed on
+  contact_.setObject(object);
+  contact_.update(cw);
+  controller_.setPayload(contact_.payload());
+  controller_.setExternalWrench(contact_.feedForward());
+
   // 7. the QP
   control_in_.time = t;
   control_in_.q = arm.q;
@@ -144,6 +166,7 @@ void HandoverCycle::assembleInput(double t, const io::ArmState& arm, const perce
   in.tcp_pose = controller_.tcpPose();
   in.tcp_velocity = controller_.tcpVelocity();
   in.ft_rotation = control::framePlacement(controller_.model(), controller_.data(), ft_frame_).linear();
+  in.load_share = contact_.loadShare();
   // this cycle's perception
   in.hand.pose = est.human.hand;
   in.hand.velocity = hand_vel_.velocity();

@@ -27,6 +27,11 @@
 //                  (blending between object and hand as selected in stage 4).
 //   6. collision   the collision constraint's person capsules from this
 //                  cycle's estimate.
+//   6b. contact    the wrist wrench of `arm` (ContactWrenchEstimator, at the
+//                  previous step's sensor rotation and acceleration): the
+//                  load share scales the object's payload in the model, and
+//                  the rest of the load is the controller's known external
+//                  wrench (config/controller.yaml contact_wrench).
 //   7. QP          Controller::step(q, qd of `arm`): kinematics, tasks,
 //                  constraints, solve, torques; updates the TCP pose, the
 //                  observed object and the collision distances.
@@ -36,7 +41,8 @@
 //   this cycle          q, qd, finger width, wrist wrench (from `arm`);
 //                       the hand and object estimates (each sample itself is
 //                       `age` s old: sensor rate and latency);
-//   one cycle old       TCP pose and velocity, F/T sensor rotation, observed
+//   one cycle old       TCP pose and velocity, F/T sensor rotation, load
+//                       share (stage 6b of the previous cycle), observed
 //                       object pose and velocity, tracking target frame,
 //                       robot-person distances: all computed by the previous
 //                       Controller::step at the previous q (before the first
@@ -58,6 +64,7 @@
 #include "control/controller.hpp"
 #include "control/controller_config.hpp"
 #include "control/model/robot_description.hpp"
+#include "control/wrench/contact_wrench.hpp"
 #include "fsm/handover/handover_fsm.hpp"
 #include "interfaces/arm_io.hpp"
 #include "perception/observation_target.hpp"
@@ -83,6 +90,9 @@ struct CycleSettings {
   double gripper_force = 40.0;                ///< N, grasp force limit at start (params.gripper)
   double forearm_length = 0.27;               ///< m, the person's forearm capsule (collision)
   double upper_arm_length = 0.33;             ///< m, the person's upper-arm capsule (collision)
+  /// params.ft.gravity_sign: -1 when io::ArmState::wrench is what the hand
+  /// exerts on the flange (the simulator), +1 for the opposite convention.
+  double ft_gravity_sign = -1.0;
   /// Grasp planning (config/grasp_selection.yaml): the grasps the object
   /// admits; empty = no planner (the declared grasp, named poses).
   control::grasp::GraspSelectionConfig grasp_selection;
@@ -143,6 +153,8 @@ class HandoverCycle {
   const control::CollisionConstraint& collision() const { return *collision_; }
   /// Index of the person-hand/gripper rule the state machine relaxes (-1: none).
   int handGripperRule() const { return hand_rule_; }
+  /// The wrist load, load share and feed-forward of the last cycle (stage 6b).
+  const control::ContactWrenchEstimator& contactWrench() const { return contact_; }
   /// Hand and object velocities from perception, [linear; angular] world axes.
   const Eigen::Matrix<double, 6, 1>& handVelocity() const { return hand_vel_.velocity(); }
 
@@ -165,6 +177,7 @@ class HandoverCycle {
   perception::PerceptionEstimate no_estimate_;  ///< before the first step
   const perception::PerceptionEstimate* estimate_ = &no_estimate_;
   fsm::HandoverInput input_;
+  control::ContactWrenchEstimator contact_;
   control::ControlInputs control_in_;
   io::ArmCommand command_;
 };

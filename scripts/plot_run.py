@@ -8,6 +8,8 @@ Columns read (see docs/outputs.md); plots whose columns are missing are skipped:
   grasp_{x,y,z,roll,pitch,yaw}, tcp_{...}        tracking reference and TCP
   q1..q7, qmargin1..qmargin7                     joints, distance to the nearest limit (rad)
   d_human, d_table, d_self                       smallest distances (m)
+  load_share, load_f{x,y,z}, ff_f{x,y,z},        the physical exchange: load share, wrist load and
+  grip_force, object_z, tcp_z                    feed-forward (N, world), grip force (N), heights (m)
 Usage: plot_run.py DIR   (exit 2 if DIR/log.csv is missing or unreadable)
 """
 import csv
@@ -184,6 +186,36 @@ def distances(cols, spans, out):
     plt.close(fig)
 
 
+def exchange(cols, spans, out):
+    """The physical exchange: who carries the object, the wrist load, the grip."""
+    t = cols["time"]
+    fig, (ax_s, ax_f, ax_z) = plt.subplots(3, 1, figsize=(12, 8), sharex=True)
+    shade_states(ax_s, spans, label=True)
+    ax_s.plot(t, cols["load_share"], label="load share (robot)")
+    ax_s.set(ylabel="share of the weight", ylim=(-0.05, 1.1), title="physical exchange")
+    ax_s.legend(fontsize=7, ncol=4)
+    shade_states(ax_f, spans)
+    for a in AXES:
+        ax_f.plot(t, cols["load_f" + a], label="load f" + a)
+    if has(cols, "ff_fz"):
+        ax_f.plot(t, cols["ff_fz"], "--", label="feed-forward fz")
+    if has(cols, "grip_force"):
+        ax_f.plot(t, cols["grip_force"], ":", label="grip force")
+    ax_f.set(ylabel="N (world)")
+    ax_f.legend(fontsize=7, ncol=5)
+    shade_states(ax_z, spans)
+    for name in ("object_z", "tcp_z"):
+        if name in cols:
+            ax_z.plot(t, cols[name], label=name)
+    ax_z.set(xlabel="time (s)", ylabel="height (m)")
+    ax_z.legend(fontsize=7)
+    for ax in (ax_s, ax_f, ax_z):
+        ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+
+
 def main(argv):
     if len(argv) != 2:
         print("usage: plot_run.py DIR", file=sys.stderr)
@@ -218,6 +250,9 @@ def main(argv):
     if has(cols, "d_human"):
         distances(cols, spans, os.path.join(run_dir, "distances.png"))
         made.append("distances.png")
+    if has(cols, "load_share", "load_fx", "load_fy", "load_fz"):
+        exchange(cols, spans, os.path.join(run_dir, "exchange.png"))
+        made.append("exchange.png")
     print("plots: " + ", ".join(made) if made else "plots: none (columns missing)")
     return 0
 

@@ -36,6 +36,10 @@ RunLog::RunLog() {
   for (const char* c : {"d_human", "d_table", "d_self", "ft_fx", "ft_fy", "ft_fz", "ft_tx", "ft_ty", "ft_tz",
                         "finger_width", "gripper_cmd", "speed_scale", "qp_status", "qp_iterations"})
     columns_.push_back(c);
+  // the physical exchange (issue 13): load share, the load on the wrist in
+  // world axes, the part the dynamics hold as a known wrench, the grip force
+  for (const char* c : {"load_share", "load_fx", "load_fy", "load_fz", "ff_fx", "ff_fy", "ff_fz", "grip_force"})
+    columns_.push_back(c);
   numeric_ = columns_.size() - 1;  // every column but the state name
 }
 

@@ -285,6 +285,11 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
         log.put(adapter.speedScale());
         log.put(static_cast<double>(controller.lastStatus()));
         log.put(controller.lastIterations());
+        const control::ContactWrenchEstimator& cw = cycle.contactWrench();
+        log.put(cw.loadShare());
+        log.putVec(cw.load().data(), 3);
+        log.putVec(cw.feedForward().data(), 3);
+        log.put(adapter.gripperForce());
         log.end();
       }
 

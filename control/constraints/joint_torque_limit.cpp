@@ -10,8 +10,9 @@ int JointTorqueLimit::compute(const ControlContext& ctx, Eigen::Ref<Eigen::Matri
                               Eigen::Ref<Eigen::VectorXd>) {
   const Data& data = *ctx.data;
   C.block<kArmDofs, kArmDofs>(0, VariableLayout::kQdd) = data.M;
-  lb.head<kArmDofs>() = -scale_ * tau_max_ - data.h;
-  ub.head<kArmDofs>() = scale_ * tau_max_ - data.h;
+  // tau = M qddot + h - tau_external within the limits
+  lb.head<kArmDofs>() = -scale_ * tau_max_ - data.h + ctx.tau_external;
+  ub.head<kArmDofs>() = scale_ * tau_max_ - data.h + ctx.tau_external;
   return kArmDofs;
 }
 

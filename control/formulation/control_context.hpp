@@ -30,6 +30,9 @@ struct ControlContext {
   double time = 0.0;                ///< s
   double dt = 0.001;                ///< control period, s
   ObservedState observed;           ///< observed object state at the start of the cycle
+  /// J_c^T f of the known external wrench f on the robot (Controller::
+  /// setExternalWrench), N m: the dynamics are M qddot + h = tau + tau_external.
+  Vector7 tau_external = Vector7::Zero();
 };
 
 }  // namespace handover::control

@@ -61,6 +61,10 @@ struct Model {
   std::array<Isometry, kArmDofs> joint_placements;      ///< joint i frame in body i-1's frame at q_i = 0
   std::array<Vector3, kArmDofs> joint_axes;             ///< unit axis of joint i in its own frame
   std::array<Inertia, kNumBodies> inertias;             ///< body inertias (body 7 includes hand + fingers)
+  /// What hangs below the wrist force-torque sensor (the hand link and
+  /// everything fixed to it, fingers at finger_opening), in the "ft_sensor"
+  /// frame: the F/T bias model subtracts its weight (control/wrench).
+  Inertia tool;
   Vector7 q_min, q_max;        ///< rad
   Vector7 v_max;               ///< rad/s
   Vector7 a_max;               ///< rad/s^2 (datasheet qdd_max)

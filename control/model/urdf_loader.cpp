@@ -118,8 +118,10 @@ void addCapsules(const std::string& path, const urdf::Link& link, int body, cons
 }
 
 // Everything below link 7: fixed joints and the prismatic finger joints.
+// `tool` (body-7 frame) also collects the links from `tool_link` down.
 void mergeSubtree(const std::string& path, const urdf::ModelInterface& urdf, const urdf::Link& link,
-                  const Isometry& X, const std::string& prefix, Model& model, Inertia& body7, double& finger_max) {
+                  const Isometry& X, const std::string& prefix, Model& model, Inertia& body7, double& finger_max,
+                  const std::string& tool_link, Inertia& tool, bool in_tool) {
   for (const auto& joint : link.child_joints) {
     const urdf::LinkConstSharedPtr child = urdf.getLink(joint->child_link_name);
     if (!child) fail(path, "joint '" + joint->name + "' names a missing child link");
@@ -133,10 +135,13 @@ void mergeSubtree(const std::string& path, const urdf::ModelInterface& urdf, con
     } else if (joint->type != urdf::Joint::FIXED) {
       fail(path, "joint '" + joint->name + "' below the last arm link must be fixed or a prismatic finger joint");
     }
-    body7 = combineInertia(body7, transformInertia(linkInertia(*child), Xc));
+    const Inertia child_inertia = transformInertia(linkInertia(*child), Xc);
+    body7 = combineInertia(body7, child_inertia);
+    const bool child_in_tool = in_tool || child->name == tool_link;
+    if (child_in_tool) tool = combineInertia(tool, child_inertia);
     model.frames.push_back(Frame{child->name, kArmDofs, Xc});
     addCapsules(path, *child, kArmDofs, Xc, prefix, model);
-    mergeSubtree(path, urdf, *child, Xc, prefix, model, body7, finger_max);
+    mergeSubtree(path, urdf, *child, Xc, prefix, model, body7, finger_max, tool_link, tool, child_in_tool);
   }
 }
 
@@ -238,7 +243,9 @@ Model loadModel(const std::string& urdf_path, const RobotDescription& descriptio
   // hand, sensor, tcp and fingers are rigidly merged into body 7
   double finger_max = 0.0;
   Inertia body7 = model.inertias[kArmDofs];
-  mergeSubtree(path, *urdf, *link, Isometry::Identity(), d.capsule_prefix, model, body7, finger_max);
+  Inertia tool;  // body-7 frame until the sensor frame is known
+  mergeSubtree(path, *urdf, *link, Isometry::Identity(), d.capsule_prefix, model, body7, finger_max, d.hand_link,
+               tool, false);
   model.inertias[kArmDofs] = body7;
   if (finger_max > 0.0) {
     model.finger_max_opening = finger_max;
@@ -257,6 +264,8 @@ Model loadModel(const std::string& urdf_path, const RobotDescription& descriptio
     f.name = alias;
     model.frames.push_back(f);
   }
+  // the tool's mass properties in the sensor frame (the sensor sits above the hand link)
+  model.tool = transformInertia(tool, model.frames[model.frameId("ft_sensor")].placement.inverse());
   assignCapsuleRoles(path, d, model);
   return model;
 }

@@ -100,7 +100,7 @@ bool Grasp::onRun(HandoverContext& ctx) {
     }
     if (!alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_)) return false;
     ctx.force_before_grasp = ctx.force;  // reference for the release test
-    ctrl().setGripper(ctx.params->gripper_close_width, ctx.params->gripper_force);
+    ctrl().setGripper(ctx.params->gripper_close_width, ctx.params->gripForce(ctx.object.mass));
     closing_ = true;
     closed_at_ = last_time_ = ctx.time;
     last_width_ = ctx.in.finger_width;
@@ -121,23 +121,55 @@ bool Grasp::onRun(HandoverContext& ctx) {
 WaitForRelease::WaitForRelease() : released_(declareOutput("Released")) {}
 
 void WaitForRelease::configure(const YamlReader& def) {
-  fraction_ = readPositive(def, "release_fraction", 2.0);
+  if (def.has("release_share")) {
+    share_ = readRange(def, "release_share", 0.05, 1.0);
+    distance_ = readRange(def, "release_distance", 0.0, 0.3);
+    wait_ = readRange(def, "release_wait", 0.0, 60.0);
+    if (def.has("release_fraction")) def.child("release_fraction").fail("give release_share or release_fraction, not both");
+  } else if (def.has("release_fraction")) {
+    fraction_ = readPositive(def, "release_fraction", 2.0);
+  } else {
+    def.fail("needs release_share (the robot's load share, 0..1) or release_fraction (of m g)");
+  }
   hold_time_ = readRange(def, "hold_time", 0.0, 5.0);
 }
 
 void WaitForRelease::onStart(HandoverContext& ctx) {
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   since_ = -1.0;
+  holding_ = false;
+  hand_start_ = -1.0;
+  carry_since_ = -1.0;
   trackTarget(ctx, ctrl(), false);  // follow the object while the person still holds it
 }
 
 bool WaitForRelease::onRun(HandoverContext& ctx) {
+  const bool hand_seen = fresh(ctx.in.hand, ctx.params->max_data_age);
+  const double hand_tcp = positionError(ctx.in.hand.pose, ctx.in.tcp_pose);
+  if (hand_seen && hand_start_ < 0.0) hand_start_ = hand_tcp;
   const double weight = ctx.object.mass * ctx.params->gravity;
-  if (ctx.addedWeight(ctx.force_before_grasp) < fraction_ * weight) {
-    since_ = -1.0;
+  const bool carries = share_ >= 0.0 ? ctx.in.load_share >= share_
+                                     : ctx.addedWeight(ctx.force_before_grasp) >= fraction_ * weight;
+  if (!carries) {
+    if (holding_) trackTarget(ctx, ctrl(), false);  // the person took it back: follow again
+    holding_ = false;
+    since_ = carry_since_ = -1.0;
     return false;
   }
   if (since_ < 0.0) since_ = ctx.time;
+  if (carry_since_ < 0.0) carry_since_ = ctx.time;
+  if (!holding_ && share_ >= 0.0) {
+    // the robot carries it: stop following the object's estimate, which still
+    // moves with the person's (leaving) hand until the release is confirmed
+    ctrl().enableTracking(false);
+    ctrl().setPoseTarget(ctx.in.tcp_pose);
+    holding_ = true;
+  }
+  // the person's hand is still on it; after release_wait with the whole load, let it be
+  if (share_ >= 0.0 && hand_seen && hand_tcp - hand_start_ < distance_ && ctx.time - carry_since_ < wait_) {
+    since_ = -1.0;
+    return false;
+  }
   if (ctx.time - since_ < hold_time_) return false;
   ctrl().setPayload(ctx.object.mass, ctx.comInTcp());
   setOutput(released_);

@@ -69,10 +69,22 @@ class Grasp : public HandoverState {
   double last_width_ = 0.0, last_time_ = 0.0, finger_speed_ = 0.0;
 };
 
-/// [Released] Follows the grasp frame until the person lets go: the filtered
-/// world force has gained at least release_fraction * m g along gravity since
-/// the grasp, for hold_time; then sets the payload.
-/// Keys: release_fraction (0..2), hold_time (s).
+/// [Released] Follows the grasp frame until the person lets go, for
+/// hold_time: the robot's load share (HandoverInput::load_share) reaches
+/// release_share and the person's hand has moved release_distance farther
+/// from the TCP than when the state started (a stale hand: the share alone;
+/// a hand that stays: the share alone once it held for release_wait),
+/// or, without release_share, the filtered world force has gained at least
+/// release_fraction * m g along gravity since the grasp. Then sets the
+/// payload (the robot holds the object).
+/// Why both: while the person's grip is rigid the load on the wrist is
+/// whatever the robot pushes (the load share follows the robot's own
+/// payload), so the load alone cannot tell that the person let go; the hand
+/// leaving can. With release_share, the TCP is held still from the moment
+/// the robot carries the load (the object estimate still follows the
+/// person's hand until the release is confirmed).
+/// Keys: release_share (0..1) with release_distance (m) and release_wait
+/// (s), or release_fraction (0..2); hold_time (s).
 class WaitForRelease : public HandoverState {
  public:
   WaitForRelease();
@@ -83,6 +95,12 @@ class WaitForRelease : public HandoverState {
  private:
   int released_;
   double fraction_ = 0.7, hold_time_ = 0.1;
+  double share_ = -1.0;  ///< release_share; < 0: the force rule
+  bool holding_ = false; ///< the robot carries the load: holding the TCP, not following
+  double distance_ = 0.0;   ///< release_distance, m
+  double wait_ = 3.5;       ///< release_wait, s
+  double carry_since_ = -1.0;  ///< s, since when the robot carries the load
+  double hand_start_ = -1.0;  ///< m, hand to TCP when first seen in this state; < 0: not yet
   double since_ = -1.0;
 };
 

@@ -6,6 +6,7 @@
 
 #include "fsm/handover/common_states.hpp"
 #include "fsm/handover/h2r_states.hpp"
+#include "fsm/handover/object_lost.hpp"
 #include "fsm/handover/r2h_states.hpp"
 #include "fsm/handover/safety.hpp"
 
@@ -30,6 +31,7 @@ void registerHandoverTypes(Registry& r) {
   r.addState<SafetyStop>("SafetyStop");
   r.addState<SlowDown>("SlowDown");
   r.addCondition<HumanTooClose>("HumanTooClose");
+  r.addCondition<ObjectLost>("ObjectLost");
 }
 
 namespace {
@@ -77,6 +79,10 @@ void HandoverFsm::sanitise(const HandoverInput& in) {
     ctx_.in.tcp_velocity = previous.tcp_velocity;
     ctx_.in.q = previous.q;
     ctx_.in.qd = previous.qd;
+    bad = true;
+  }
+  if (!std::isfinite(in.load_share)) {
+    ctx_.in.load_share = previous.load_share;
     bad = true;
   }
   if (!std::isfinite(in.finger_width)) {

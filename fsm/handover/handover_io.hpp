@@ -32,6 +32,9 @@ struct HandoverInput {
   /// Rotation of the F/T sensor frame in the world (from the kinematics), so
   /// the force can be compared with gravity.
   Eigen::Matrix3d ft_rotation = Eigen::Matrix3d::Identity();
+  /// Share of the object's weight the robot carries, 0..1 (control::
+  /// ContactWrenchEstimator, one cycle old): 0 while the person holds it.
+  double load_share = 0.0;
 
   // perception
   SensedBody hand;          ///< the person's hand (grip point frame, design notes 1)

@@ -1,6 +1,13 @@
 #include "fsm/handover/handover_params.hpp"
 
+#include <algorithm>
+
 namespace handover::fsm {
+
+double HandoverParams::gripForce(double mass) const {
+  const double f = grip_margin * mass * (gravity + grip_acceleration) / (2.0 * grip_friction);
+  return std::min(grip_max_force, std::max(grip_min_force, f));
+}
 
 bool Workspace::contains(const Vector3& p) const {
   return (p - center).norm() <= radius && (p.array() >= box_min.array()).all() &&
@@ -63,6 +70,16 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
   p.gripper_close_width = inRange(g, "close_width", 0.0, 0.08);
   if (p.gripper_close_width >= p.gripper_open_width) g.child("close_width").fail("must be below open_width");
   p.gripper_force = positive(g, "force", 140.0);
+  {
+    const YamlReader grip = g.child("grip");
+    p.grip_friction = positive(grip, "friction", 2.0);
+    p.grip_margin = inRange(grip, "margin", 1.0, 10.0);
+    p.grip_acceleration = inRange(grip, "acceleration", 0.0, 50.0);
+    p.grip_min_force = positive(grip, "min_force", 140.0);
+    p.grip_max_force = positive(grip, "max_force", 140.0);
+    if (p.grip_max_force < p.grip_min_force) grip.child("max_force").fail("must be at least min_force");
+    grip.finish();
+  }
   g.finish();
   const YamlReader ft = n.child("ft");
   p.ft_filter_tau = inRange(ft, "filter_tau", 0.0, 1.0);

@@ -29,7 +29,18 @@ struct HandoverParams {
   // gripper
   double gripper_open_width = 0.08;  ///< m, commanded opening
   double gripper_close_width = 0.0;  ///< m, commanded when grasping (the object stops the fingers)
-  double gripper_force = 40.0;       ///< N
+  double gripper_force = 40.0;       ///< N, force limit while opening (and before a grasp)
+  /// The grip on the object (gripper.grip): each finger presses with F, and
+  /// friction holds 2 mu F against the object's weight and the retract's
+  /// accelerations: F = margin m (g + acceleration) / (2 mu), clipped to
+  /// [min_force, max_force].
+  double grip_friction = 0.5;        ///< mu, finger-object friction coefficient assumed
+  double grip_margin = 2.0;          ///< safety factor on the friction force
+  double grip_acceleration = 3.0;    ///< m/s^2 the held object may see beyond gravity
+  double grip_min_force = 10.0;      ///< N
+  double grip_max_force = 70.0;      ///< N, the gripper's continuous force
+  /// Grasp force (N) for an object of `mass` kg. RT safe.
+  double gripForce(double mass) const;
   // wrist force-torque sensor
   double ft_filter_tau = 0.05;       ///< s, low-pass time constant of the world-frame force
   /// Change of the world z force reading per unit of hanging weight: -1 when

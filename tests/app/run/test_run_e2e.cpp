@@ -100,6 +100,8 @@ std::vector<std::string> documentedLogColumns() {
   for (const char* n : {"d_human", "d_table", "d_self", "ft_fx", "ft_fy", "ft_fz", "ft_tx", "ft_ty", "ft_tz",
                         "finger_width", "gripper_cmd", "speed_scale", "qp_status", "qp_iterations"})
     c.push_back(n);
+  for (const char* n : {"load_share", "load_fx", "load_fy", "load_fz", "ff_fx", "ff_fy", "ff_fz", "grip_force"})
+    c.push_back(n);
   return c;
 }
 

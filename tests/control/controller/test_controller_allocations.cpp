@@ -43,6 +43,14 @@ TEST(ControllerAllocations, NoHeapAllocationInTheControlStep) {
   offset.placement.translation() = Vector3(0, 0, 0.02);
   offset.has_free_axis = true;
   Isometry target = ctl.tcpPose();
+  // the wrist load estimator the cycle runs before each step (runtime/handover_cycle.cpp, stage 6b)
+  ContactWrenchSettings cws;
+  cws.feed_forward = true;
+  ContactWrenchEstimator load(model, cws, ctl.config().period);
+  Payload object;
+  object.mass = 1.0;
+  load.start(object, false);
+  ContactWrenchInput cw;
 
   // sanity: the counter works
   g_counting = true;
@@ -66,6 +74,16 @@ TEST(ControllerAllocations, NoHeapAllocationInTheControlStep) {
     if (k == 300) ctl.setTaskEnabled("posture", true);
     if (k == 400) ctl.setSpeedScale(0.5);
     if (k == 500) ctl.setTaskEnabled("pose", true);
+    cw.sensor_rotation = framePlacement(ctl.model(), ctl.data(), ctl.model().frameId("ft_sensor")).linear();
+    // the hand's weight, and from k = 500 a 1 kg object's (world -z), in sensor axes
+    cw.reading.head<3>() = cw.sensor_rotation.transpose() * Vector3(0.3, -0.2, -7.5 - (k > 500 ? 9.81 : 0.0));
+    cw.reading.tail<3>() = Vector3(0.01, 0.02, 0.0);
+    cw.sensor_acceleration = ctl.sensorAcceleration();
+    cw.at_rest = k < 300;
+    cw.gripper_closed = k > 400;
+    load.update(cw);
+    ctl.setPayload(load.payload());
+    ctl.setExternalWrench(load.feedForward());
     in.time = k * dt;
     in.q = q;
     in.qd = v;
@@ -81,4 +99,5 @@ TEST(ControllerAllocations, NoHeapAllocationInTheControlStep) {
   g_counting = false;
   EXPECT_EQ(g_allocations.load(), 0);
   EXPECT_EQ(ctl.fallbackCount(), 1);  // only the NaN step fell back
+  EXPECT_GT(load.loadShare(), 0.5);   // the estimator really ran: it saw the added weight
 }

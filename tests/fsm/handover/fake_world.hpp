@@ -194,6 +194,7 @@ struct World {
     Vector3 f(0, 0, -(kHandMass + (robot_carries ? mass : 0.0)) * 9.81);
     if (robot_grip && person_holds) f += pull;
     in.wrench.head<3>() = f;
+    in.load_share = robot_carries ? 1.0 : 0.0;  // what control::ContactWrenchEstimator would report
     const double age = time - last_sample;
     in.hand.pose = handPose();
     in.hand.velocity.head<3>() = hand_vel;

@@ -12,7 +12,7 @@ namespace {
 const Vector3 kMeet(0.55, 0.0, 0.30);
 const Vector3 kAway(1.0, -0.3, 0.2);
 
-/// Lets go once the robot has gripped the object for 0.1 s.
+/// Lets go once the robot has gripped the object for 0.1 s, and withdraws.
 std::function<void(World&)> releasesAfterGrip() {
   auto gripped_since = std::make_shared<double>(-1.0);
   return [gripped_since](World& w) {
@@ -21,7 +21,10 @@ std::function<void(World&)> releasesAfterGrip() {
       return;
     }
     if (*gripped_since < 0) *gripped_since = w.time;
-    if (w.time - *gripped_since >= 0.1) w.person_holds = false;
+    if (w.time - *gripped_since >= 0.1 && w.person_holds) {
+      w.person_holds = false;
+      w.moveHand(kAway, 0.5);
+    }
   };
 }
 

@@ -43,17 +43,25 @@ TEST(HandoverConfig, ShippedConfigLoads) {
   EXPECT_EQ(loadError(shipped()), "");
   RecordingController ctl;
   HandoverFsm fsm(YamlReader::loadFile(HandoverFsm::defaultConfigPath()), ctl, ObjectInfo{});
-  EXPECT_EQ(fsm.machine().interruptCount(), 2);
+  EXPECT_EQ(fsm.machine().interruptCount(), 3);  // object_lost, slow_down, safety_stop
 }
 
 TEST(HandoverConfig, TypoInStateKey) {
   // a misspelt required key: reported as missing, at the state's line
-  std::string bad = replaced(shipped(), "release_fraction: 0.7", "release_fractoin: 0.7");
+  std::string bad = replaced(shipped(), "release_share: 0.9", "release_shrae: 0.9");
   std::string msg = loadError(bad);
-  EXPECT_NE(msg.find("fsm.yaml:" + std::to_string(lineOf(bad, "release_fractoin"))), std::string::npos) << msg;
-  EXPECT_NE(msg.find("WaitForRelease': missing required key 'release_fraction'"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("fsm.yaml:" + std::to_string(lineOf(bad, "release_shrae"))), std::string::npos) << msg;
+  EXPECT_NE(msg.find("needs release_share"), std::string::npos) << msg;
+  bad = replaced(shipped(), "release_wait: 3.5, hold_time: 0.05", "release_wait: 3.5, hold_tiem: 0.05");
+  msg = loadError(bad);
+  EXPECT_NE(msg.find("fsm.yaml:" + std::to_string(lineOf(bad, "hold_tiem"))), std::string::npos) << msg;
+  EXPECT_NE(msg.find("WaitForRelease': missing required key 'hold_time'"), std::string::npos) << msg;
+  // both rules at once: one of them is a mistake
+  bad = replaced(shipped(), "release_share: 0.9", "release_share: 0.9, release_fraction: 0.7");
+  msg = loadError(bad);
+  EXPECT_NE(msg.find("not both"), std::string::npos) << msg;
   // an extra key: reported as unknown, at its own line
-  bad = replaced(shipped(), "release_fraction: 0.7", "release_fraction: 0.7, relase_delay: 1");
+  bad = replaced(shipped(), "release_share: 0.9", "release_share: 0.9, relase_delay: 1");
   msg = loadError(bad);
   EXPECT_NE(msg.find("fsm.yaml:" + std::to_string(lineOf(bad, "relase_delay"))), std::string::npos) << msg;
   EXPECT_NE(msg.find("unknown key 'relase_delay'"), std::string::npos) << msg;

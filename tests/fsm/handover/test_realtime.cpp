@@ -42,7 +42,10 @@ TEST(HandoverRealtime, TakeWithSafetyEventsDoesNotAllocate) {
     else w.arm_distance = 1.0;
     if (!w.robot_grip) return;
     if (*gripped_since < 0) *gripped_since = w.time;
-    if (w.time - *gripped_since >= 0.1) w.person_holds = false;
+    if (w.time - *gripped_since >= 0.1 && w.person_holds) {
+      w.person_holds = false;
+      w.moveHand(Vector3(1.0, -0.3, 0.2), 0.5);  // lets go and withdraws
+    }
   };
   const long before = g_allocations.load();
   const bool done = rig.runUntil([&] { return rig.fsm->done(); }, 20.0);

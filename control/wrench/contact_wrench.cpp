@@ -1,0 +1,102 @@
+#include "control/wrench/contact_wrench.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "control/model/rigid_inertia.hpp"
+
+namespace handover::control {
+
+ContactWrenchEstimator::ContactWrenchEstimator(const Model& model, const ContactWrenchSettings& settings,
+                                               double period)
+    : settings_(settings),
+      tool_(model.tool),
+      sensor_T_tcp_(model.frames[model.frameId("ft_sensor")].placement.inverse() *
+                    model.frames[model.frameId("tcp")].placement),
+      gravity_(model.gravity),
+      alpha_(period / (std::max(0.0, settings.filter_tau) + period)),
+      calibrator_(std::max(1, static_cast<int>(std::lround(settings.calibration_time / period)))) {
+  held_at_start_ = tool_;
+}
+
+Inertia ContactWrenchEstimator::objectInSensor(double share) const {
+  Inertia in;
+  in.mass = share * object_.mass;
+  in.com = object_.com;
+  in.inertia_com = share * object_.inertia_com;
+  return transformInertia(in, sensor_T_tcp_);
+}
+
+void ContactWrenchEstimator::start(const Payload& object, bool holds) {
+  object_ = object;
+  held_at_start_ = holds ? combineInertia(tool_, objectInSensor(1.0)) : tool_;
+  calibrator_.restart();
+  holds_at_start_ = holds;
+  calibrating_ = true;
+  filtered_ = false;
+  load_.setZero();
+  share_ = holds ? 1.0 : 0.0;
+  payload_ = object_;
+  payload_.mass = share_ * object_.mass;
+  payload_.inertia_com = share_ * object_.inertia_com;
+  feed_forward_.setZero();
+}
+
+void ContactWrenchEstimator::update(const ContactWrenchInput& in) {
+  if (!in.reading.allFinite() || !in.sensor_rotation.allFinite() || !in.sensor_acceleration.allFinite()) return;
+  const Matrix3& R = in.sensor_rotation;
+  // calibrate only as the run started: at rest, the gripper as it was (empty and open, or
+  // closed on the known object); once it changed, what it holds is no longer known
+  if (in.gripper_closed != holds_at_start_) calibrating_ = false;
+  if (calibrating_ && in.at_rest) calibrator_.add(in.reading, R, held_at_start_, gravity_);
+
+  // 1-2. what the tool does not explain (offset zero until calibrated: trust the model meanwhile)
+  const Vector3 g_eff = gravity_ - in.sensor_acceleration;
+  const Vector6 rest = calibrator_.compensate(in.reading, R, tool_, g_eff);
+  Vector6 w;
+  w.head<3>() = R * rest.head<3>();
+  w.tail<3>() = R * rest.tail<3>();
+
+  // 3. low-pass
+  if (!filtered_) {
+    load_ = w;
+    filtered_ = true;
+  } else {
+    load_ += alpha_ * (w - load_);
+  }
+
+  // 4. load share: the share of the object's weight on the sensor
+  const double g = gravity_.norm();
+  double share = 0.0;
+  if (in.gripper_closed && object_.mass > 0.0 && g > 0.0) {
+    share = std::clamp(load_.head<3>().dot(gravity_) / (g * g * object_.mass), 0.0, 1.0);
+  }
+  share_ = share;
+
+  // 5. the model carries that share
+  payload_.mass = share_ * object_.mass;
+  payload_.com = object_.com;
+  payload_.inertia_com = share_ * object_.inertia_com;
+
+  // 6. the rest is the known external wrench
+  if (!settings_.feed_forward || !calibrator_.done()) {  // an unknown offset would be fed forward too
+    feed_forward_.setZero();
+    return;
+  }
+  const Vector6 modelled = hangingWrench(objectInSensor(share_), R, g_eff);
+  feed_forward_.head<3>() = load_.head<3>() - R * modelled.head<3>();
+  feed_forward_.tail<3>() = load_.tail<3>() - R * modelled.tail<3>();
+}
+
+ContactWrenchSettings parseContactWrenchSettings(const YamlReader& s) {
+  ContactWrenchSettings c;
+  if (!s.isMap()) s.fail("expected a map with feed_forward, filter_tau, calibration_time, rest_speed");
+  if (auto v = s.optionalChild("feed_forward")) c.feed_forward = v->asBool();
+  if (auto v = s.optionalChild("filter_tau")) c.filter_tau = v->checkRange(v->asDouble(), 0.0, 1.0);
+  if (auto v = s.optionalChild("calibration_time")) c.calibration_time = v->checkRange(v->asDouble(), 0.001, 10.0);
+  if (auto v = s.optionalChild("rest_speed")) c.rest_speed = v->checkRange(v->asDouble(), 1e-6, 1.0);
+  s.finish();
+  return c;
+}
+
+}  // namespace handover::control

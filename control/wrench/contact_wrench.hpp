@@ -1,0 +1,110 @@
+// The physical exchange, as the wrist force-torque sensor feels it: what the
+// gripper holds (the object, and through it the person) pushes on the robot.
+// Each control cycle (paper: M qdd + N = tau + J_c^T f):
+//
+//   1. compensate  reading - sensor offset (FtBiasCalibrator) - the tool's
+//                  weight and inertia (Model::tool, turning with the wrist,
+//                  accelerating with the sensor: the model's acceleration)
+//   2. world       rotate into world axes: force, and torque about the sensor
+//   3. filter      first-order low-pass (filter_tau)
+//   4. load share  s = (filtered force along gravity) / (m g), clipped to
+//                  0..1, and 0 while the gripper is open: 0 while the person
+//                  carries the object, 1 once the robot does
+//   5. payload     the object's mass properties scaled by s: the model carries
+//                  the share the robot holds (with its inertia)
+//   6. feed-forward  the filtered load minus what that payload already puts in
+//                  the model (its weight and inertial force): the rest is the
+//                  known external wrench the dynamics hold (Controller::
+//                  setExternalWrench), e.g. the share the person still
+//                  carries, or the receiver's pull.
+//
+// Frames: world (z up) unless said; the wrench is [force (N); torque (N m)
+// about the "ft_sensor" origin]. Real-time safety: update() and the
+// read-outs allocate nothing and never throw; the constructor and start()
+// are start-up calls.
+#pragma once
+
+#include "config/yaml_reader.hpp"
+#include "control/model/model.hpp"
+#include "control/wrench/ft_bias.hpp"
+
+namespace handover::control {
+
+/// config/controller.yaml `contact_wrench`.
+struct ContactWrenchSettings {
+  bool feed_forward = false;      ///< hand the rest of the load to the dynamics (off: estimate and log only; docs/method.md)
+  double filter_tau = 0.01;       ///< s, low-pass time constant of the load
+  double calibration_time = 0.2;  ///< s of readings at rest that calibrate the sensor offset
+  double rest_speed = 0.02;       ///< rad/s, joint speed norm below which the arm is at rest
+};
+
+/// What the estimator reads each cycle.
+struct ContactWrenchInput {
+  Vector6 reading = Vector6::Zero();            ///< io::ArmState::wrench, sensor frame
+  Matrix3 sensor_rotation = Matrix3::Identity();///< the sensor's axes in the world
+  Vector3 sensor_acceleration = Vector3::Zero();///< m/s^2, world, of the sensor origin (the model's)
+  bool at_rest = false;                         ///< the arm is still (calibration samples)
+  bool gripper_closed = false;                  ///< the fingers are commanded closed (may hold the object)
+};
+
+class ContactWrenchEstimator {
+ public:
+  /// `period`: s between update() calls. Not RT safe.
+  ContactWrenchEstimator(const Model& model, const ContactWrenchSettings& settings, double period);
+
+  /// Start of a run: `object` = what may be held (mass kg, com in the "tcp"
+  /// frame); `holds` = the gripper starts holding it, so the calibration
+  /// counts its weight (known mass) with the tool's, and the load share
+  /// starts at 1. Restarts the calibration and the filter. The calibration
+  /// takes readings at rest until it has calibration_time of them or the
+  /// gripper leaves its start state (opened or closed); until then the
+  /// offset is zero (the model's tool weight alone).
+  void start(const Payload& object, bool holds);
+
+  /// What may be held changes (a grasp chosen while approaching moves the
+  /// centre of mass in the tcp frame); the calibration stays. RT safe.
+  void setObject(const Payload& object) { object_ = object; }
+
+  /// One cycle. Non-finite readings keep the last estimate. RT safe.
+  void update(const ContactWrenchInput& in);
+
+  /// Filtered wrench that what the gripper holds exerts on the robot, world axes.
+  const Vector6& load() const { return load_; }
+  /// 0 (the person carries the object) .. 1 (the robot does).
+  double loadShare() const { return share_; }
+  /// The object scaled by the load share, for the model (tcp frame).
+  const Payload& payload() const { return payload_; }
+  /// The known external wrench on the robot at the sensor, world axes: the
+  /// load minus what payload() puts in the model. Zero when feed_forward is
+  /// off and until the offset is calibrated.
+  const Vector6& feedForward() const { return feed_forward_; }
+  bool calibrated() const { return calibrator_.done(); }
+  const FtBiasCalibrator& calibrator() const { return calibrator_; }
+  const ContactWrenchSettings& settings() const { return settings_; }
+
+ private:
+  Inertia objectInSensor(double share) const;
+
+  ContactWrenchSettings settings_;
+  Inertia tool_;              ///< sensor frame
+  Isometry sensor_T_tcp_;
+  Vector3 gravity_;
+  double alpha_;              ///< filter gain per update
+  FtBiasCalibrator calibrator_;
+  Payload object_;            ///< tcp frame
+  Inertia held_at_start_;     ///< sensor frame: tool (+ object) during the calibration
+  bool holds_at_start_ = false;
+  bool calibrating_ = true;   ///< until the gripper leaves its start state
+  bool filtered_ = false;
+  Vector6 load_ = Vector6::Zero();
+  double share_ = 0.0;
+  Payload payload_;
+  Vector6 feed_forward_ = Vector6::Zero();
+};
+
+/// config/controller.yaml's `contact_wrench` section (optional; defaults
+/// above); unknown keys and out-of-range values throw InputError naming the
+/// file, key and line.
+ContactWrenchSettings parseContactWrenchSettings(const YamlReader& section);
+
+}  // namespace handover::control

@@ -1,0 +1,105 @@
+// The load estimator (control/wrench/contact_wrench.hpp) on synthetic
+// readings: the load share follows the share of the object's weight on the
+// sensor, the payload follows the share, an open gripper holds nothing, and
+// the feed-forward is what the payload does not explain.
+#include <gtest/gtest.h>
+
+#include "control/model/robot_description.hpp"
+#include "control/wrench/contact_wrench.hpp"
+#include "control/model/rigid_inertia.hpp"
+
+namespace handover::control {
+namespace {
+
+constexpr double kDt = 0.001;
+
+struct Fixture {
+  Model model = loadModel(defaultRobotDescription(), 0.08);
+  Payload object;
+  Matrix3 R = Eigen::AngleAxisd(M_PI, Vector3::UnitX()).toRotationMatrix();  // hand pointing down
+  Isometry sensor_T_tcp = model.frames[model.frameId("ft_sensor")].placement.inverse() *
+                          model.frames[model.frameId("tcp")].placement;
+  Fixture() {
+    object.mass = 1.0;
+    object.com = Vector3(0.0, 0.0, 0.02);
+  }
+  /// The sensor reading with `share` of the object's weight on it and a
+  /// further force `extra` (world) at the sensor.
+  Vector6 reading(double share, const Vector3& extra = Vector3::Zero()) const {
+    Inertia held;
+    held.mass = share * object.mass;
+    held.com = object.com;
+    Vector6 w = hangingWrench(model.tool, R, model.gravity) +
+                hangingWrench(transformInertia(held, sensor_T_tcp), R, model.gravity);
+    w.head<3>() += R.transpose() * extra;
+    return w;
+  }
+  void run(ContactWrenchEstimator& est, const Vector6& reading, bool closed, int cycles, bool at_rest = false) const {
+    ContactWrenchInput in;
+    in.reading = reading;
+    in.sensor_rotation = R;
+    in.gripper_closed = closed;
+    in.at_rest = at_rest;
+    for (int i = 0; i < cycles; ++i) est.update(in);
+  }
+};
+
+TEST(ContactWrench, LoadShareFollowsTheWeightOnTheSensor) {
+  Fixture f;
+  ContactWrenchEstimator est(f.model, ContactWrenchSettings{}, kDt);
+  est.start(f.object, false);
+  f.run(est, f.reading(0.0), false, 300, true);  // calibrates empty and open
+  ASSERT_TRUE(est.calibrated());
+  EXPECT_DOUBLE_EQ(est.loadShare(), 0.0);
+  for (double share : {0.0, 0.25, 0.6, 1.0}) {
+    f.run(est, f.reading(share), true, 200);
+    EXPECT_NEAR(est.loadShare(), share, 1e-3) << share;
+    EXPECT_NEAR(est.payload().mass, share * f.object.mass, 1e-3) << share;
+    EXPECT_NEAR(est.load().z(), -share * f.object.mass * 9.81, 1e-2) << share;
+  }
+  // more than the object's weight (someone pushes down) is still "all of it"
+  f.run(est, f.reading(1.0, Vector3(0, 0, -20.0)), true, 200);
+  EXPECT_DOUBLE_EQ(est.loadShare(), 1.0);
+  // an open gripper holds nothing, whatever pushes on it
+  f.run(est, f.reading(0.5), false, 200);
+  EXPECT_DOUBLE_EQ(est.loadShare(), 0.0);
+  EXPECT_DOUBLE_EQ(est.payload().mass, 0.0);
+}
+
+TEST(ContactWrench, FeedForwardIsWhatThePayloadDoesNotExplain) {
+  Fixture f;
+  ContactWrenchSettings s;
+  s.feed_forward = true;
+  ContactWrenchEstimator est(f.model, s, kDt);
+  est.start(f.object, true);  // starts holding: calibrates with the object
+  f.run(est, f.reading(1.0), true, 300, true);
+  ASSERT_TRUE(est.calibrated());
+  EXPECT_NEAR(est.loadShare(), 1.0, 1e-6);
+  EXPECT_LT(est.feedForward().norm(), 1e-6);
+  // the receiver pulls 8 N along x and carries half the weight
+  f.run(est, f.reading(0.5, Vector3(8.0, 0.0, 0.0)), true, 300);
+  EXPECT_NEAR(est.loadShare(), 0.5, 1e-3);
+  EXPECT_NEAR(est.feedForward().x(), 8.0, 1e-2);
+  EXPECT_LT(est.feedForward().segment<2>(1).norm(), 1e-2);
+
+  // off: estimate only
+  ContactWrenchEstimator off(f.model, ContactWrenchSettings{}, kDt);
+  off.start(f.object, true);
+  f.run(off, f.reading(1.0), true, 300, true);
+  f.run(off, f.reading(0.5, Vector3(8.0, 0.0, 0.0)), true, 300);
+  EXPECT_NEAR(off.loadShare(), 0.5, 1e-3);
+  EXPECT_EQ(off.feedForward(), Vector6::Zero());
+}
+
+TEST(ContactWrench, NonFiniteReadingsKeepTheEstimate) {
+  Fixture f;
+  ContactWrenchEstimator est(f.model, ContactWrenchSettings{}, kDt);
+  est.start(f.object, true);
+  f.run(est, f.reading(1.0), true, 300, true);
+  f.run(est, Vector6::Constant(std::nan("")), true, 10);
+  EXPECT_NEAR(est.loadShare(), 1.0, 1e-6);
+  EXPECT_TRUE(est.load().allFinite());
+}
+
+}  // namespace
+}  // namespace handover::control
