@@ -35,6 +35,22 @@ struct FakePlanner : PlannerInterface {
   }
 };
 
+/// The person offers, lets go once gripped for 0.1 s; runs until Retract has started.
+void takeUntilRetract(Rig& rig) {
+  rig.world.moveHand(kMeet, 0.5);
+  auto gripped_since = std::make_shared<double>(-1.0);
+  rig.person = [gripped_since](World& w) {
+    if (!w.robot_grip) return;
+    if (*gripped_since < 0) *gripped_since = w.time;
+    if (w.time - *gripped_since >= 0.1 && w.person_holds) {
+      w.person_holds = false;
+      w.moveHand(w.hand + Vector3(0.3, 0.0, 0.0), 0.5);  // and withdraws
+    }
+  };
+  ASSERT_TRUE(rig.runUntilState("Retract", 20.0)) << rig.fsm->activePath();
+  rig.step();
+}
+
 bool same(const Isometry& a, const Isometry& b) { return a.isApprox(b, 1e-12); }
 
 TEST(PlannedTargets, ApproachTracksThePlanExactlyWithItsConfiguration) {
@@ -106,15 +122,7 @@ TEST(PlannedTargets, HeldObjectIsCarriedUprightInJointSpace) {
   planner.answer.tcp.translation() = Vector3(0.35, 0.1, 0.45);
   rig.fsm->setPlanner(&planner);
   rig.world.object_plan = sidePlan(2, 0.1);
-  rig.world.moveHand(kMeet, 0.5);
-  auto gripped_since = std::make_shared<double>(-1.0);
-  rig.person = [gripped_since](World& w) {
-    if (!w.robot_grip) return;
-    if (*gripped_since < 0) *gripped_since = w.time;
-    if (w.time - *gripped_since >= 0.1) w.person_holds = false;
-  };
-  ASSERT_TRUE(rig.runUntilState("Retract", 20.0)) << rig.fsm->activePath();
-  rig.step();
+  takeUntilRetract(rig);
   EXPECT_EQ(planner.calls, 1);
   // asked with the grasp closed on (the plan's), not the declared one
   EXPECT_TRUE(planner.last_object_in_tcp.isApprox(rig.world.object_plan.target_in_observed.inverse()));
@@ -127,15 +135,7 @@ TEST(PlannedTargets, NoPlacementFallsBackToTheNamedPose) {
   Rig rig;
   FakePlanner planner;  // answers "not found"
   rig.fsm->setPlanner(&planner);
-  rig.world.moveHand(kMeet, 0.5);
-  auto gripped_since = std::make_shared<double>(-1.0);
-  rig.person = [gripped_since](World& w) {
-    if (!w.robot_grip) return;
-    if (*gripped_since < 0) *gripped_since = w.time;
-    if (w.time - *gripped_since >= 0.1) w.person_holds = false;
-  };
-  ASSERT_TRUE(rig.runUntilState("Retract", 20.0)) << rig.fsm->activePath();
-  rig.step();
+  takeUntilRetract(rig);
   EXPECT_EQ(planner.calls, 1);
   EXPECT_TRUE(rig.ctl.pose_active);
   EXPECT_TRUE(same(rig.ctl.pose, rig.fsm->params().stow_pose) ||
