@@ -70,6 +70,14 @@ std::vector<control::grasp::GraspSpec> graspSpecsFor(const scenario::ObjectSpec&
   }
   s.preference = declared_preference;
   std::vector<cg::GraspSpec> specs{s};
+  for (const scenario::ObjectSpec::ExtraGrasp& g : obj.grasps) {  // more grasps the scenario declares
+    cg::GraspSpec e;
+    e.placement = g.grasp;
+    e.has_free_axis = g.free_axis >= 0;
+    if (e.has_free_axis) e.free_axis = control::Vector3::Unit(g.free_axis);
+    e.preference = declared_preference;
+    specs.push_back(e);
+  }
   // and every family the shape allows (a person may hold it anywhere)
   const cg::PrimitiveShape shape = obj.shape == scenario::Shape::Box        ? cg::PrimitiveShape::kBox
                                    : obj.shape == scenario::Shape::Sphere ? cg::PrimitiveShape::kSphere

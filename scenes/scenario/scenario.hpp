@@ -42,6 +42,13 @@ struct ObjectSpec {
   double mass = 0.3;                                       ///< kg
   Eigen::Isometry3d grasp = Eigen::Isometry3d::Identity();  ///< grasp frame in the object frame
   int free_axis = -1;  ///< 0/1/2 = x/y/z axis of symmetry of the object frame, -1 = none
+  /// `grasps:` further acceptable grasps (each with its own symmetry axis);
+  /// `grasp` stays the first one (categories, grasp error).
+  struct ExtraGrasp {
+    Eigen::Isometry3d grasp = Eigen::Isometry3d::Identity();  ///< grasp frame in the object frame
+    int free_axis = -1;
+  };
+  std::vector<ExtraGrasp> grasps;
 };
 
 struct RobotSpec {

@@ -46,12 +46,8 @@ std::string mm(double m) {
   return os.str();
 }
 
-// the object fits the gripper at its grasp frame, which lies on or in it, and
-// the person's grip point is at the object
-void checkObjectPoses(const Scenario& s) {
-  const ObjectSpec& o = s.object;
-  SourceRef grasp_where = s.object_where;
-  grasp_where.key += ".grasp";
+// the object fits the gripper at a grasp frame, which lies on or in it
+void checkGraspFits(const ObjectSpec& o, const SourceRef& grasp_where) {
   const double width = objectWidthAcrossFingers(o);
   if (width > kGripperOpening) {
     failAt(grasp_where, "the object is " + mm(width) + " wide across the fingers (the grasp frame's y axis); the gripper opens " +
@@ -61,6 +57,21 @@ void checkObjectPoses(const Scenario& s) {
   if (d_grasp > kMaxGraspToSurface) {
     failAt(grasp_where, "the grasp frame is " + mm(d_grasp) + " outside the object's surface; the fingers close within " +
                             mm(kMaxGraspToSurface) + " of it");
+  }
+}
+
+// every grasp fits, and the person's grip point is at the object
+void checkObjectPoses(const Scenario& s) {
+  const ObjectSpec& o = s.object;
+  SourceRef grasp_where = s.object_where;
+  grasp_where.key += ".grasp";
+  checkGraspFits(o, grasp_where);
+  for (std::size_t i = 0; i < o.grasps.size(); ++i) {  // every declared grasp, the same way
+    ObjectSpec other = o;
+    other.grasp = o.grasps[i].grasp;
+    SourceRef where = s.object_where;
+    where.key += ".grasps[" + std::to_string(i) + "]";
+    checkGraspFits(other, where);
   }
   if (s.human.holds_object) {
     // the grip point (hand origin) in the object frame

@@ -72,6 +72,9 @@ Eigen::Vector3d readPosition(const YamlReader& r) {
   return p;
 }
 
+// x | y | z as 0 | 1 | 2
+int readAxis(const YamlReader& r) { return r.asEnum({"x", "y", "z"})[0] - 'x'; }
+
 // {pos: [x, y, z], rpy: [r, p, y]} with rpy optional (identity when missing)
 Eigen::Isometry3d readPose(const YamlReader& r) {
   if (!r.isMap()) r.fail("expected a map {pos: [x, y, z], rpy: [r, p, y]}");
@@ -175,9 +178,21 @@ void readObject(const YamlReader& r, ObjectSpec& o) {
     mass.fail(os.str());
   }
   if (auto g = r.optionalChild("grasp")) o.grasp = readPose(*g);
-  if (auto a = r.optionalChild("free_axis")) {
-    const std::string ax = a->asEnum({"x", "y", "z"});
-    o.free_axis = ax[0] - 'x';
+  if (auto a = r.optionalChild("free_axis")) o.free_axis = readAxis(*a);
+  if (auto list = r.optionalChild("grasps")) {
+    if (!list->isSequence() || list->size() < 1 || list->size() > 16)
+      list->fail("expected a list of 1 to 16 grasps {pos: [x, y, z], rpy: [r, p, y], free_axis: x|y|z}");
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const YamlReader g = list->at(i);
+      if (!g.isMap()) g.fail("expected a map {pos: [x, y, z], rpy: [r, p, y], free_axis: x|y|z}");
+      Eigen::Vector3d rpy = Eigen::Vector3d::Zero();
+      if (auto c = g.optionalChild("rpy")) rpy = readRpy(*c);
+      ObjectSpec::ExtraGrasp extra;
+      extra.grasp = poseFromPosRpy(readPosition(g.child("pos")), rpy);
+      if (auto a = g.optionalChild("free_axis")) extra.free_axis = readAxis(*a);
+      g.finish();
+      o.grasps.push_back(extra);
+    }
   }
   r.finish();
 }

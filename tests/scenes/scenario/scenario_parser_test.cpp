@@ -322,3 +322,37 @@ TEST_F(ScenarioFiles, ConfigThatIsNotAMapIsAnInputError) {
   expectError(mutate("seed: 3", "seed: 3\nconfig: " + cfg + "\nset:\n  period: 0.001"), "config", "config:",
               "not a controller config");
 }
+
+TEST_F(ScenarioFiles, ObjectMayDeclareMoreGrasps) {
+  const std::string text = mutate("  free_axis: z\n", R"(  free_axis: z
+  grasps:
+    - {pos: [0, 0, 0.10], rpy: [3.1416, 0, 0], free_axis: z}
+    - {pos: [0.0, 0.0, -0.02]}
+)");
+  const Scenario s = parseScenario(write("s.yaml", text));
+  ASSERT_EQ(s.object.grasps.size(), 2u);
+  EXPECT_EQ(s.object.grasps[0].free_axis, 2);
+  EXPECT_NEAR(s.object.grasps[0].grasp.translation().z(), 0.10, 1e-12);
+  EXPECT_NEAR(s.object.grasps[0].grasp.linear()(2, 2), -1.0, 1e-6);  // approach from above
+  EXPECT_EQ(s.object.grasps[1].free_axis, -1);
+  EXPECT_TRUE(s.object.grasps[1].grasp.linear().isIdentity());
+  // the first grasp keeps its meaning
+  EXPECT_NEAR(s.object.grasp.translation().z(), 0.05, 1e-12);
+  // without the key: no extra grasps
+  EXPECT_TRUE(parseScenario(write("t.yaml", kValid)).object.grasps.empty());
+}
+
+TEST_F(ScenarioFiles, BadGraspListsNameTheKey) {
+  expectError(mutate("  free_axis: z\n", "  free_axis: z\n  grasps: {pos: [0, 0, 0]}\n"), "object.grasps", "grasps:",
+              "list");
+  expectError(mutate("  free_axis: z\n", "  free_axis: z\n  grasps:\n    - {pos: [0, 0, 0], free_axis: w}\n"),
+              "object.grasps[0].free_axis", "free_axis: w");
+  expectError(mutate("  free_axis: z\n", "  free_axis: z\n  grasps:\n    - {pos: [0, 0, 0], grip: 1}\n"),
+              "object.grasps[0].grip", "grip: 1");
+}
+
+TEST_F(ScenarioFiles, EveryDeclaredGraspMustFitTheGripper) {
+  // across the bottle's length (20 cm) the fingers cannot close
+  expectError(mutate("  free_axis: z\n", "  free_axis: z\n  grasps:\n    - {pos: [0, 0, 0], rpy: [1.5708, 0, 0]}\n"),
+              "object.grasps[0]", "shape: cylinder", "wide across the fingers");
+}
