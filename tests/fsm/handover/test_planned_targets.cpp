@@ -51,14 +51,19 @@ void takeUntilRetract(Rig& rig) {
   rig.step();
 }
 
+/// The person offers with `plan` reported by the planner; runs until Approach has started.
+void offerUntilApproach(Rig& rig, const TrackingPlan& plan) {
+  rig.world.object_plan = plan;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  rig.step();
+}
+
 bool same(const Isometry& a, const Isometry& b) { return a.isApprox(b, 1e-12); }
 
 TEST(PlannedTargets, ApproachTracksThePlanExactlyWithItsConfiguration) {
   Rig rig;
-  rig.world.object_plan = sidePlan(3, 0.1);
-  rig.world.moveHand(kMeet, 0.5);
-  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
-  rig.step();
+  offerUntilApproach(rig, sidePlan(3, 0.1));
   EXPECT_TRUE(rig.ctl.offset_planned);
   // backed off along the approach axis by the state's standoff
   const Isometry& plan = rig.world.object_plan.target_in_observed;
@@ -70,10 +75,7 @@ TEST(PlannedTargets, ApproachTracksThePlanExactlyWithItsConfiguration) {
 
 TEST(PlannedTargets, ApproachFollowsASwitchAndGraspCommits) {
   Rig rig;
-  rig.world.object_plan = sidePlan(3, 0.1);
-  rig.world.moveHand(kMeet, 0.5);
-  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
-  rig.step();
+  offerUntilApproach(rig, sidePlan(3, 0.1));
   // the planner switches while the robot still approaches: the target follows
   rig.world.object_plan = sidePlan(4, 0.2);
   rig.step();
