@@ -52,9 +52,9 @@ std::vector<PoseSample> parsePoseCsv(const std::string& text, const std::string&
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) in.seekg(3);
   while (std::getline(in, line)) {
     ++lineno;
-    if (line.size() > kMaxEncodedSample) {
+    if (line.size() > kMaxCsvSampleLine) {
       throw InputError(path + ":" + std::to_string(lineno) + ": line longer than " +
-                       std::to_string(kMaxEncodedSample) + " bytes (not a pose sample)");
+                       std::to_string(kMaxCsvSampleLine) + " bytes (not a pose sample)");
     }
     if (line.find('\0') != std::string::npos) throw InputError(path + ":" + std::to_string(lineno) + ": NUL byte");
     if (!line.empty() && line.back() == '\r') line.pop_back();

@@ -11,6 +11,8 @@ namespace handover::perception {
 
 constexpr int kSampleFields = 22;
 constexpr std::size_t kMaxEncodedSample = 22 * 26 + 8;  ///< bytes a line may need
+/// A CSV line may also carry the tracked object's pose (7 more numbers).
+constexpr std::size_t kMaxCsvSampleLine = (22 + 7) * 26 + 8;
 
 /// Writes the sample with 17 significant digits; returns the length.
 int encodeSample(const PoseSample& s, char sep, char* buf, std::size_t size);

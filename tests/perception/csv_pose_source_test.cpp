@@ -142,3 +142,26 @@ TEST(PoseDatagram, DecodesTheStreamFormatAndNamesEachRejection) {
   EXPECT_NE(decodeDatagram("hpose", 5, s), nullptr);
   EXPECT_NE(decodeDatagram("", 0, s), nullptr);
 }
+
+// The longest line the writer can produce (object columns, every number
+// negative with 17 significant digits and an exponent) is read back: what
+// `handover import` writes, `run --tracker csv:` accepts.
+TEST(CsvPoseSource, LongestLinesWithTheObjectRoundTrip) {
+  PoseSample s;
+  s.stamp = 1234.5678901234567;
+  const Eigen::Quaterniond q = Eigen::Quaterniond(-0.12345678901234567, -0.23456789012345678, -0.34567890123456789,
+                                                  -0.45678901234567891).normalized();
+  const Eigen::Vector3d p(-1.2345678901234567e-5, -0.12345678901234567, -1.2345678901234567);
+  for (Pose* pose : {&s.hand, &s.forearm, &s.upper_arm, &s.object}) {
+    pose->position = p;
+    pose->orientation = q;
+  }
+  s.has_object = true;
+  const std::string path = tempPath("longest.csv");
+  writePoseCsv(path, {s, s});
+  const auto read = readPoseCsv(path);
+  ASSERT_EQ(read.size(), 2u);
+  EXPECT_TRUE(read[0].has_object);
+  expectSame(read[0].object, s.object);
+  fs::remove(path);
+}
