@@ -80,11 +80,12 @@ void GraspPlanning::update(const perception::PerceptionEstimate& est, const cont
 }
 
 fsm::ArmPlacement GraspPlanning::uprightPlacement(const control::Isometry& object_in_tcp,
+                                                  const control::Vector3& up_axis,
                                                   const control::Vector3& object_position,
                                                   const control::Vector7& q_now) {
   cg::HeldObject held;
   held.object_in_tcp = object_in_tcp;
-  held.up_axis = settings_.up_axis;
+  held.up_axis = up_axis;
   const cg::UprightPlacement p = cg::findUprightPlacement(model_, held, object_position, q_now, settings_.config);
   fsm::ArmPlacement out;
   out.found = p.found;

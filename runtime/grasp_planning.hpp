@@ -31,7 +31,6 @@ struct GraspPlanningSettings {
   control::grasp::GraspSelectionConfig config;        ///< config/grasp_selection.yaml
   std::vector<control::grasp::GraspSpec> object_grasps;  ///< what the object admits (at least one)
   control::Isometry presentation = control::Isometry::Identity();  ///< declared TCP pose in the receiver's hand frame
-  control::Vector3 up_axis = control::Vector3::UnitZ();  ///< object frame: the axis kept vertical when carried
   double forearm_length = 0.27, upper_arm_length = 0.33;  ///< m, the person's arm capsules
   double forearm_radius = 0.045, upper_arm_radius = 0.055;  ///< m
   double hand_radius = 0.05;  ///< m, a sphere around the grip point (take: grasp away from the hand)
@@ -52,8 +51,8 @@ class GraspPlanning : public fsm::PlannerInterface {
   const fsm::TrackingPlan& handPlan() const { return hand_plan_; }
   const control::grasp::GraspSelector& objectSelector() const { return object_; }
 
-  fsm::ArmPlacement uprightPlacement(const control::Isometry& object_in_tcp, const control::Vector3& object_position,
-                                     const control::Vector7& q_now) override;
+  fsm::ArmPlacement uprightPlacement(const control::Isometry& object_in_tcp, const control::Vector3& up_axis,
+                                     const control::Vector3& object_position, const control::Vector7& q_now) override;
 
  private:
   static void copyChoice(const control::grasp::GraspChoice& c, fsm::TrackingPlan& plan);

@@ -54,7 +54,6 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
     ps.config = settings.grasp_selection;
     ps.object_grasps = settings.object_grasps;
     ps.presentation = machine_->context().presentation.offset;
-    ps.up_axis = settings.object_up_axis;
     ps.forearm_length = settings.forearm_length;
     ps.upper_arm_length = settings.upper_arm_length;
     ps.forearm_radius = settings.collision.person.forearm_radius;

@@ -97,7 +97,6 @@ struct CycleSettings {
   /// admits; empty = no planner (the declared grasp, named poses).
   control::grasp::GraspSelectionConfig grasp_selection;
   std::vector<control::grasp::GraspSpec> object_grasps;
-  control::Vector3 object_up_axis = control::Vector3::UnitZ();  ///< object frame: kept vertical when carried
 };
 
 /// CycleSettings from the repository's config files (config/*.yaml, the

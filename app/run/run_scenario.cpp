@@ -61,7 +61,6 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   cs.object_grasp = graspOffsetFor(sc.object);
   cs.object_grasps = graspSpecsFor(sc.object, cs.grasp_selection.declared_preference, cs.gripper_open_width);
   cs.collision.object = collisionShapeFor(sc.object);
-  cs.object_up_axis = sc.object.free_axis >= 0 ? control::Vector3::Unit(sc.object.free_axis) : control::Vector3::UnitZ();
   human::ScriptedHuman person(sc);
   const scenario::BodyDimensions body = person.body();
   cs.forearm_length = body.forearm;

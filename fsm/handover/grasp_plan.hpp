@@ -34,11 +34,12 @@ class PlannerInterface {
  public:
   virtual ~PlannerInterface() = default;
   /// Where to hold the object (its pose in the TCP frame `object_in_tcp`)
-  /// upright near `object_position` (world, m), starting from q_now. Not
+  /// with its axis `up_axis` (object frame, unit) along world z, near
+  /// `object_position` (world, m), starting from q_now. Not
   /// cheap (up to about 1 ms: many IK solves): call it when a phase starts,
   /// not every cycle. No allocation.
-  virtual ArmPlacement uprightPlacement(const Isometry& object_in_tcp, const Vector3& object_position,
-                                        const Vector7& q_now) = 0;
+  virtual ArmPlacement uprightPlacement(const Isometry& object_in_tcp, const Vector3& up_axis,
+                                        const Vector3& object_position, const Vector7& q_now) = 0;
 };
 
 }  // namespace handover::fsm

@@ -18,11 +18,22 @@ namespace handover::fsm {
 /// `named` and returns the TCP pose it ends at: `named` through the pose
 /// task when there is no planner, the gripper holds nothing, or no upright
 /// placement was found; else the placement, in joint space.
+/// The axis of the object's frame (+-x, +-y, +-z) nearest to world up for the
+/// object at rotation R_obj: the way up it was handed over, squared to its own
+/// axes (a bottle stays standing, a baton held lying stays lying).
+inline Vector3 handedUpAxis(const Eigen::Matrix3d& R_obj) {
+  const Vector3 up_in_object = R_obj.transpose() * Vector3::UnitZ();
+  Eigen::Index k = 0;
+  up_in_object.cwiseAbs().maxCoeff(&k);
+  return Vector3::Unit(k) * (up_in_object[k] >= 0.0 ? 1.0 : -1.0);
+}
+
 inline Isometry carryHeldObject(HandoverContext& ctx, ControllerHandle& ctrl, const Isometry& named) {
   if (ctx.planner != nullptr && ctx.ledger->payloadSet()) {
     const Isometry object_in_tcp = ctx.grasp.offset.inverse();
     const Vector3 position = (named * object_in_tcp).translation();
-    const ArmPlacement placement = ctx.planner->uprightPlacement(object_in_tcp, position, ctx.in.q);
+    const Vector3 up = handedUpAxis(ctx.in.tcp_pose.linear() * object_in_tcp.linear());
+    const ArmPlacement placement = ctx.planner->uprightPlacement(object_in_tcp, up, position, ctx.in.q);
     if (placement.found) {
       ctrl.clearPoseTarget();
       ctrl.setPostureTarget(placement.q);

@@ -113,8 +113,8 @@ TEST(GraspPlanning, WhileTheRobotHoldsItPlansThePresentationToTheHand) {
 TEST(GraspPlanning, UprightPlacementKeepsTheHeldObjectVertical) {
   GraspPlanning planning(panda(), bottleSettings(false));
   const control::Isometry object_in_tcp = bottleSettings(false).object_grasps[0].placement.inverse();
-  const fsm::ArmPlacement p = planning.uprightPlacement(object_in_tcp, control::Vector3(0.35, 0.0, 0.45),
-                                                        readyConfiguration());
+  const fsm::ArmPlacement p = planning.uprightPlacement(object_in_tcp, control::Vector3::UnitZ(),
+                                                        control::Vector3(0.35, 0.0, 0.45), readyConfiguration());
   ASSERT_TRUE(p.found);
   const control::Isometry object = tcpPose(panda(), p.q) * object_in_tcp;
   EXPECT_GT(object.linear().col(2).z(), std::cos(10.0 * M_PI / 180.0));

@@ -4,6 +4,7 @@
 // closed on, and a held object is carried upright in joint space.
 #include <gtest/gtest.h>
 
+#include "fsm/handover/held_object_goal.hpp"
 #include "tests/fsm/handover/fake_world.hpp"
 
 namespace handover::fsm::test {
@@ -28,7 +29,8 @@ struct FakePlanner : PlannerInterface {
   int calls = 0;
   Isometry last_object_in_tcp = Isometry::Identity();
   ArmPlacement answer;
-  ArmPlacement uprightPlacement(const Isometry& object_in_tcp, const Vector3&, const Vector7&) override {
+  ArmPlacement uprightPlacement(const Isometry& object_in_tcp, const Vector3&, const Vector3&,
+                                const Vector7&) override {
     ++calls;
     last_object_in_tcp = object_in_tcp;
     return answer;
@@ -142,6 +144,18 @@ TEST(PlannedTargets, NoPlacementFallsBackToTheNamedPose) {
   EXPECT_TRUE(rig.ctl.pose_active);
   EXPECT_TRUE(same(rig.ctl.pose, rig.fsm->params().stow_pose) ||
               (rig.ctl.pose.translation() - rig.fsm->params().stow_pose.translation()).norm() < 1e-9);
+}
+
+TEST(PlannedTargets, AHeldObjectKeepsTheWayUpItWasHandedOver) {
+  // a bottle standing, tilted 20 degrees: its z axis
+  const Eigen::Matrix3d tilted = Eigen::AngleAxisd(0.35, Vector3::UnitX()).toRotationMatrix();
+  EXPECT_TRUE(handedUpAxis(tilted).isApprox(Vector3::UnitZ()));
+  // a baton held lying, its y axis pointing down: -y is up
+  const Eigen::Matrix3d lying = Eigen::AngleAxisd(-M_PI / 2, Vector3::UnitX()).toRotationMatrix();
+  EXPECT_TRUE(handedUpAxis(lying).isApprox(-Vector3::UnitY())) << handedUpAxis(lying).transpose();
+  // upside down
+  const Eigen::Matrix3d flipped = Eigen::AngleAxisd(M_PI, Vector3::UnitY()).toRotationMatrix();
+  EXPECT_TRUE(handedUpAxis(flipped).isApprox(-Vector3::UnitZ()));
 }
 
 }  // namespace
