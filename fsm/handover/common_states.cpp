@@ -65,7 +65,7 @@ void Retract::onStart(HandoverContext& ctx) {
   }
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(ObservationTarget::kNone);
-  goal_ = carryHeldObject(ctx, ctrl(), goal_);
+  goal_ = carryHeldObject(ctx, ctrl(), goal_, handedUpAxis(ctx));  // after a take
 }
 
 bool Retract::onRun(HandoverContext& ctx) {
@@ -91,7 +91,8 @@ void Retreat::onStart(HandoverContext& ctx) {
   if (open_) ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(ObservationTarget::kNone);
-  goal_ = carryHeldObject(ctx, ctrl(), ctx.params->safe_pose);
+  // holding on after an abort: only a give still holds the object here
+  goal_ = carryHeldObject(ctx, ctrl(), ctx.params->safe_pose, presentedUpAxis(ctx));
 }
 
 bool Retreat::onRun(HandoverContext& ctx) {

@@ -28,12 +28,22 @@ inline Vector3 handedUpAxis(const Eigen::Matrix3d& R_obj) {
   return Vector3::Unit(k) * (up_in_object[k] >= 0.0 ? 1.0 : -1.0);
 }
 
-inline Isometry carryHeldObject(HandoverContext& ctx, ControllerHandle& ctrl, const Isometry& named) {
+/// The take: the way up the person handed the object over (its pose now).
+inline Vector3 handedUpAxis(const HandoverContext& ctx) {
+  return handedUpAxis(ctx.in.tcp_pose.linear() * ctx.grasp.offset.inverse().linear());
+}
+/// The give: the way up it will sit in the receiver's hand (params.object_in_hand).
+inline Vector3 presentedUpAxis(const HandoverContext& ctx) {
+  return handedUpAxis(ctx.params->object_in_hand.linear());
+}
+
+/// `up_axis`: the object-frame axis to keep vertical (handedUpAxis or presentedUpAxis).
+inline Isometry carryHeldObject(HandoverContext& ctx, ControllerHandle& ctrl, const Isometry& named,
+                                const Vector3& up_axis) {
   if (ctx.planner != nullptr && ctx.ledger->payloadSet()) {
     const Isometry object_in_tcp = ctx.grasp.offset.inverse();
     const Vector3 position = (named * object_in_tcp).translation();
-    const Vector3 up = handedUpAxis(ctx.in.tcp_pose.linear() * object_in_tcp.linear());
-    const ArmPlacement placement = ctx.planner->uprightPlacement(object_in_tcp, up, position, ctx.in.q);
+    const ArmPlacement placement = ctx.planner->uprightPlacement(object_in_tcp, up_axis, position, ctx.in.q);
     if (placement.found) {
       ctrl.clearPoseTarget();
       ctrl.setPostureTarget(placement.q);

@@ -21,7 +21,7 @@ void HoldReady::onStart(HandoverContext& ctx) {
   if (!ctx.ledger->payloadSet()) ctrl().setPayload(ctx.object.mass, ctx.comInTcp());
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(ObservationTarget::kHand);
-  goal_ = carryHeldObject(ctx, ctrl(), p.ready_pose);
+  goal_ = carryHeldObject(ctx, ctrl(), p.ready_pose, presentedUpAxis(ctx));
 }
 
 bool HoldReady::onRun(HandoverContext& ctx) {
