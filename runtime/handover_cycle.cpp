@@ -42,7 +42,6 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
       estimator_(settings.estimator),
       obs_target_(settings.target),
       adapter_(controller_, obs_target_, settings.object_grasp, settings.gripper_open_width),
-      tcp_T_object_(settings.object.grasp_in_object.inverse()),
       contact_(controller_.model(), settings.controller.contact_wrench, settings.controller.period) {
   controller_.formulation().addConstraint(collision_);
   hand_rule_ = collision_->collisionModel().ruleIndex("person_hand_gripper");
@@ -90,11 +89,9 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   // 1. perceive (who holds the object, and the TCP, as of the last cycle)
   estimator_.update(t, source);
   const bool robot_holds = adapter_.payloadSet();
-  if (robot_holds && !robot_held_) tcp_T_object_ = machine_->context().grasp.offset.inverse();  // the grasp closed on
-  robot_held_ = robot_holds;
   const perception::PerceptionEstimate& est =
       estimator_.estimate(t, robot_holds ? perception::ObjectHolder::Robot : perception::ObjectHolder::Person,
-                          controller_.tcpPose(), tcp_T_object_);
+                          controller_.tcpPose(), machine_->context().objectInTcp());  // the grasp closed on
   estimate_ = &est;
 
   // 2. velocities from new samples

@@ -170,8 +170,6 @@ class HandoverCycle {
   ControllerAdapter adapter_;
   std::unique_ptr<fsm::HandoverFsm> machine_;
   std::unique_ptr<GraspPlanning> planning_;
-  bool robot_held_ = false;  ///< the payload was set in the previous cycle
-  Eigen::Isometry3d tcp_T_object_ = Eigen::Isometry3d::Identity();
   SensedVelocity hand_vel_, object_vel_;
   perception::PerceptionEstimate no_estimate_;  ///< before the first step
   const perception::PerceptionEstimate* estimate_ = &no_estimate_;

@@ -62,22 +62,16 @@ control::ObjectShapeSettings collisionShapeFor(const scenario::ObjectSpec& obj) 
 std::vector<control::grasp::GraspSpec> graspSpecsFor(const scenario::ObjectSpec& obj, double declared_preference,
                                                      double gripper_opening) {
   namespace cg = control::grasp;
-  cg::GraspSpec s;
-  s.placement = obj.grasp;
-  if (obj.free_axis >= 0) {
-    s.has_free_axis = true;
-    s.free_axis = control::Vector3::Unit(obj.free_axis);
-  }
-  s.preference = declared_preference;
-  std::vector<cg::GraspSpec> specs{s};
-  for (const scenario::ObjectSpec::ExtraGrasp& g : obj.grasps) {  // more grasps the scenario declares
-    cg::GraspSpec e;
-    e.placement = g.grasp;
-    e.has_free_axis = g.free_axis >= 0;
-    if (e.has_free_axis) e.free_axis = control::Vector3::Unit(g.free_axis);
-    e.preference = declared_preference;
-    specs.push_back(e);
-  }
+  auto declared = [&](const Eigen::Isometry3d& grasp, int free_axis) {
+    cg::GraspSpec s;
+    s.placement = grasp;
+    s.has_free_axis = free_axis >= 0;
+    if (s.has_free_axis) s.free_axis = control::Vector3::Unit(free_axis);
+    s.preference = declared_preference;
+    return s;
+  };
+  std::vector<cg::GraspSpec> specs{declared(obj.grasp, obj.free_axis)};
+  for (const scenario::ObjectSpec::ExtraGrasp& g : obj.grasps) specs.push_back(declared(g.grasp, g.free_axis));
   // and every family the shape allows (a person may hold it anywhere)
   const cg::PrimitiveShape shape = obj.shape == scenario::Shape::Box        ? cg::PrimitiveShape::kBox
                                    : obj.shape == scenario::Shape::Sphere ? cg::PrimitiveShape::kSphere

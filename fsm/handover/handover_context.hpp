@@ -46,10 +46,10 @@ struct HandoverContext : Context {
   /// presentation (params.object_in_hand with the declared grasp).
   TrackedChoice presentation;
 
+  /// The object's pose in the TCP frame, held with `grasp`.
+  Isometry objectInTcp() const { return grasp.offset.inverse(); }
   /// Centre of mass of the object in the TCP frame, held with `grasp`, m.
-  Vector3 comInTcp() const {
-    return grasp.offset.inverse() * (object.grasp_in_object * object.com_in_tcp);
-  }
+  Vector3 comInTcp() const { return objectInTcp() * (object.grasp_in_object * object.com_in_tcp); }
 
   Vector3 force = Vector3::Zero();               ///< low-pass filtered F/T force, world axes, N
   bool force_valid = false;                      ///< at least one finite sample filtered

@@ -30,7 +30,7 @@ inline Vector3 handedUpAxis(const Eigen::Matrix3d& R_obj) {
 
 /// The take: the way up the person handed the object over (its pose now).
 inline Vector3 handedUpAxis(const HandoverContext& ctx) {
-  return handedUpAxis(ctx.in.tcp_pose.linear() * ctx.grasp.offset.inverse().linear());
+  return handedUpAxis(ctx.in.tcp_pose.linear() * ctx.objectInTcp().linear());
 }
 /// The give: the way up it will sit in the receiver's hand (params.object_in_hand).
 inline Vector3 presentedUpAxis(const HandoverContext& ctx) {
@@ -41,7 +41,7 @@ inline Vector3 presentedUpAxis(const HandoverContext& ctx) {
 inline Isometry carryHeldObject(HandoverContext& ctx, ControllerHandle& ctrl, const Isometry& named,
                                 const Vector3& up_axis) {
   if (ctx.planner != nullptr && ctx.ledger->payloadSet()) {
-    const Isometry object_in_tcp = ctx.grasp.offset.inverse();
+    const Isometry object_in_tcp = ctx.objectInTcp();
     const Vector3 position = (named * object_in_tcp).translation();
     const ArmPlacement placement = ctx.planner->uprightPlacement(object_in_tcp, up_axis, position, ctx.in.q);
     if (placement.found) {
