@@ -10,6 +10,7 @@
 
 #include "control/grasp/chain_kinematics.hpp"
 #include "control/grasp/grasp_selector.hpp"
+#include "control/grasp/shape_grasps.hpp"
 #include "control/grasp/upright_placement.hpp"
 
 namespace {
@@ -145,11 +146,14 @@ Isometry swayingObject(int k) {
 }
 
 // `updates` selections of a moving object after a cold first update (not measured)
-void runMovingSelection(benchmark::State& state, int cold_solves_per_update) {
+void runMovingSelection(benchmark::State& state, int cold_solves_per_update, bool shape_families = false) {
   const Model& model = pandaModel();
   GraspSelectionConfig cfg = shippedConfig();
   cfg.cold_solves_per_update = cold_solves_per_update;
-  GraspSelector selector(model, {bottleSideGrasp()}, cfg);
+  std::vector<GraspSpec> specs{bottleSideGrasp()};
+  if (shape_families)  // what the handover cycle plans over: the declared grasp and the bottle's families
+    for (const GraspSpec& g : shapeGraspSpecs(PrimitiveShape::kCylinder, {0.03, 0.20})) specs.push_back(g);
+  GraspSelector selector(model, specs, cfg);
   const Vector7 q_now = ready();
   int k = 0;
   selector.update(swayingObject(k++), q_now);
@@ -175,6 +179,13 @@ void runMovingSelection(benchmark::State& state, int cold_solves_per_update) {
 // `cold_solves_per_update` unreachable ones, scores and hysteresis
 void BM_SelectionMovingObject(benchmark::State& state) { runMovingSelection(state, shippedConfig().cold_solves_per_update); }
 BENCHMARK(BM_SelectionMovingObject);
+
+// the same over the declared grasp and every family the bottle's shape allows
+// (side, 45 degrees, top: 84 candidates), as runtime/grasp_planning plans
+void BM_SelectionWithShapeFamilies(benchmark::State& state) {
+  runMovingSelection(state, shippedConfig().cold_solves_per_update, true);
+}
+BENCHMARK(BM_SelectionWithShapeFamilies);
 
 // the same with every seed retried for every unreachable candidate in every
 // update (cold_solves_per_update: 0): what the retry budget saves
