@@ -63,7 +63,10 @@ Controller::Controller(Model model, const ControllerConfig& config, std::unique_
   formulation_.addConstraint(torque_limit_);
 
   formulation_.reserveProblem(problem_);
-  solver_->reserve(kNumVars, problem_.capacityEq(), problem_.capacityIn());
+  // room for the relaxation's phase 1 (one more variable, soft rows split)
+  solver_->reserve(SoftRowRelaxation::solverVars(kNumVars), problem_.capacityEq(),
+                   SoftRowRelaxation::solverRowsIn(problem_.capacityIn()));
+  relaxation_.reserve(kNumVars, problem_.capacityEq(), problem_.capacityIn());
 
   ControlInputs start;
   start.q = c.posture.target;
@@ -89,6 +92,9 @@ void Controller::reset(const ControlInputs& in) {
   status_ = QpStatus::kOptimal;
   iterations_ = 0;
   fell_back_ = false;
+  relaxed_ = false;
+  slack_ = 0.0;
+  relaxed_count_ = 0;
   fallback_count_ = 0;
   fallback_streak_ = 0;
 }
@@ -106,6 +112,8 @@ ControlContext Controller::context(double time) const {
 
 const Vector7& Controller::step(const ControlInputs& in) {
   fell_back_ = false;
+  relaxed_ = false;
+  slack_ = 0.0;
   if (!(in.q.allFinite() && in.qd.allFinite() && std::isfinite(in.time))) {
     // keep the last valid kinematics: the damped stop uses the last known state
     status_ = QpStatus::kInvalidProblem;
@@ -124,6 +132,16 @@ const Vector7& Controller::step(const ControlInputs& in) {
 
   status_ = solver_->solve(problem_, x_);
   iterations_ = solver_->result().iterations;
+  if (status_ == QpStatus::kInfeasible && config_.qp.relax_soft_rows && problem_.hasSoftRows()) {
+    const QpStatus relaxed = relaxation_.solve(problem_, *solver_, x_);
+    iterations_ += relaxation_.iterations();
+    if (relaxed == QpStatus::kOptimal && x_.allFinite()) {
+      status_ = relaxed;
+      relaxed_ = true;
+      slack_ = relaxation_.slack();
+      ++relaxed_count_;
+    }
+  }
   if (status_ != QpStatus::kOptimal || !x_.allFinite()) {
     fallback(solver_->result().message);
     return tau_;

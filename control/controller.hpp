@@ -10,7 +10,11 @@
 // also involve alphadot_obs, and without the (much heavier) observation task
 // only the regularisation would stop them from moving the observed object. Constraints: "joint_acceleration", "joint_position",
 // "joint_velocity", "joint_torque"; more (e.g. collision) may be added through
-// formulation(). If the QP fails (any status but optimal) or the inputs hold
+// formulation(). When the rows cannot all hold and some are soft (collision),
+// they are relaxed by the least common amount and the QP solved again
+// (SoftRowRelaxation; counted: relaxedCount, lastSlack) - the arm keeps
+// within its own limits and escapes as well as they allow. If the QP still
+// fails (any status but optimal) or the inputs hold
 // NaN/inf, the controller falls back to a damped stop
 // qddot = -kd qdot clipped to the acceleration limits; fallbacks are counted
 // with the QP status and the reason (fallbackStreak, lastFallbackReason), never
@@ -31,6 +35,7 @@
 #include "control/controller_config.hpp"
 #include "control/formulation/formulation.hpp"
 #include "control/qp/qp_solver.hpp"
+#include "control/qp/soft_row_relaxation.hpp"
 #include "control/tasks/end_effector_pose_task.hpp"
 #include "control/tasks/grasp_frame.hpp"
 #include "control/tasks/observation_task.hpp"
@@ -100,6 +105,12 @@ class Controller {
   QpStatus lastStatus() const { return status_; }
   int lastIterations() const { return iterations_; }
   bool lastStepFellBack() const { return fell_back_; }
+  /// Whether the last step's QP was solved only with its soft rows relaxed.
+  bool lastStepRelaxed() const { return relaxed_; }
+  /// Widening of the soft rows in the last step (0 when not relaxed; row units, m/s^2 for collision).
+  double lastSlack() const { return slack_; }
+  /// Steps solved with relaxed soft rows since reset().
+  long relaxedCount() const { return relaxed_count_; }
   long fallbackCount() const { return fallback_count_; }
   /// Consecutive fallback steps up to the last one (0 after a solved step):
   /// an application logs a fallback when this is 1 (and now and then after).
@@ -133,6 +144,7 @@ class Controller {
   Formulation formulation_;
   QpProblem problem_;
   std::unique_ptr<QpSolver> solver_;
+  SoftRowRelaxation relaxation_;
   int tcp_id_ = 0;
   int ft_id_ = 0;
   Vector6 external_wrench_ = Vector6::Zero();
@@ -160,6 +172,9 @@ class Controller {
   QpStatus status_ = QpStatus::kOptimal;
   int iterations_ = 0;
   bool fell_back_ = false;
+  bool relaxed_ = false;
+  double slack_ = 0.0;
+  long relaxed_count_ = 0;
   long fallback_count_ = 0;
   long fallback_streak_ = 0;
   const char* fallback_reason_ = "";

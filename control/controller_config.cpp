@@ -118,6 +118,7 @@ ControllerConfig parseControllerConfig(const YamlReader& root) {
     if (auto c = s->optionalChild("regularisation")) cfg.qp.regularisation = c->checkRange(c->asDouble(), 0.0, 1.0);
     if (auto c = s->optionalChild("max_iterations"))
       cfg.qp.max_iterations = static_cast<int>(c->checkRange(c->asInt(), 1, 100000));
+    if (auto c = s->optionalChild("relax_soft_rows")) cfg.qp.relax_soft_rows = c->asBool();
     s->finish();
   }
   if (auto s = section(root, "contact_wrench")) cfg.contact_wrench = parseContactWrenchSettings(*s);

@@ -58,6 +58,9 @@ struct ControllerConfig {
   struct Qp {
     double regularisation = 1e-3;  ///< must stay well above 1e-13 x the largest weight (solver pivot test)
     int max_iterations = 1000;
+    /// Relax soft rows (collision) by the least amount when the QP is
+    /// infeasible, instead of falling back to the damped stop.
+    bool relax_soft_rows = true;
   } qp;
 
   /// The wrist force-torque sensor's load in the dynamics (contact_wrench.hpp).

@@ -47,7 +47,7 @@ std::string resultsCsvHeader() {
          "hand_still_to_grasp,total_time,min_human_distance,human_contacts,object_dropped,"
          "limit_position,limit_velocity,limit_torque,qp_failures,grasp_error_pos,grasp_error_rot_deg,"
          "control_step_us_median,control_step_us_p99,control_step_us_max,realtime_factor,error,"
-         "index,direction,grasp,shape,behaviour,placement,hand,height,category,expected_outcome,met,drop_time,drop_reason";
+         "index,direction,grasp,shape,behaviour,placement,hand,height,category,expected_outcome,met,drop_time,drop_reason,qp_relaxed";
 }
 
 std::string resultsCsvRow(const BatchEntry& e) {
@@ -64,7 +64,8 @@ std::string resultsCsvRow(const BatchEntry& e) {
      << ',' << csvField(s.error_message) << ',' << e.index << ',' << e.category.direction << ','
      << e.category.grasp << ',' << e.category.shape << ',' << e.category.behaviour << ',' << e.category.placement
      << ',' << e.category.hand << ',' << e.category.height << ',' << scenario::categoryLabel(e.category) << ','
-     << e.expected_outcome << ',' << (e.expectation_met ? 1 : 0) << ',' << num(s.drop_time) << ',' << s.drop_reason;
+     << e.expected_outcome << ',' << (e.expectation_met ? 1 : 0) << ',' << num(s.drop_time) << ',' << s.drop_reason
+     << ',' << s.qp_relaxed;
   return os.str();
 }
 
@@ -169,6 +170,7 @@ std::vector<BatchEntry> parseResultsCsv(const std::string& text, const std::stri
     s.drop_reason = get("drop_reason");
     s.limit_violations = {integer("limit_position"), integer("limit_velocity"), integer("limit_torque")};
     s.qp_failures = integer("qp_failures");
+    s.qp_relaxed = integer("qp_relaxed");  // 0 in results of older versions
     s.grasp_error_pos = real("grasp_error_pos");
     s.grasp_error_rot_deg = real("grasp_error_rot_deg");
     s.control_step_us = {real("control_step_us_median").value_or(0.0), real("control_step_us_p99").value_or(0.0),
@@ -184,7 +186,7 @@ std::string batchSummaryJson(const std::vector<BatchEntry>& entries, const Shard
   for (const auto& n : outcomeNames()) count[n] = 0;
   Mean ttg, total, still;
   double min_dist = INFINITY;
-  int lim_pos = 0, lim_vel = 0, lim_tau = 0, qp = 0, aborts = 0, retries = 0, contacts = 0;
+  int lim_pos = 0, lim_vel = 0, lim_tau = 0, qp = 0, relaxed = 0, aborts = 0, retries = 0, contacts = 0;
   for (const auto& e : entries) {
     const RunSummary& s = e.summary;
     ++count[s.outcome];
@@ -198,6 +200,7 @@ std::string batchSummaryJson(const std::vector<BatchEntry>& entries, const Shard
     lim_vel += s.limit_violations.velocity;
     lim_tau += s.limit_violations.torque;
     qp += s.qp_failures;
+    relaxed += s.qp_relaxed;
     aborts += s.aborts;
     retries += s.retries;
     contacts += s.human_contacts;
@@ -227,6 +230,7 @@ std::string batchSummaryJson(const std::vector<BatchEntry>& entries, const Shard
   w.value("human_contacts", contacts).value("aborts", aborts).value("retries", retries);
   w.beginObject("limit_violations").value("position", lim_pos).value("velocity", lim_vel).value("torque", lim_tau).endObject();
   w.value("qp_failures", qp);
+  w.value("qp_relaxed", relaxed);
   int met = 0;
   std::map<std::string, std::pair<int, int>> by_category;  // label -> (runs, met)
   for (const auto& e : entries) {

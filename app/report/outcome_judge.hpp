@@ -37,6 +37,7 @@ struct StepFacts {
   bool velocity_violation = false;
   bool torque_violation = false;
   bool qp_failed = false;
+  bool qp_relaxed = false;  ///< solved only with the soft (collision) rows relaxed
   const std::string* state = nullptr;       ///< full state path; pointer must stay valid for the call
   double step_us = 0.0;                     ///< wall time of the controller step
 };
@@ -78,6 +79,7 @@ class OutcomeJudge {
   double min_dist_ = 1e9;
   LimitViolations lim_;
   int qp_failures_ = 0;
+  int qp_relaxed_ = 0;
   // grasp timing
   std::optional<double> grasp_time_;
   std::optional<double> grasp_pos_err_, grasp_rot_err_;

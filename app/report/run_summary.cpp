@@ -28,6 +28,7 @@ std::string RunSummary::toJson() const {
       .value("torque", limit_violations.torque)
       .endObject();
   w.value("qp_failures", qp_failures);
+  w.value("qp_relaxed", qp_relaxed);
   w.beginObject("tracker").value("source", tracker).value("rejected_samples", static_cast<double>(rejected_samples)).endObject();
   if (grasp_error_pos) {
     w.beginObject("grasp_error").value("pos", grasp_error_pos).value("rot_deg", grasp_error_rot_deg).endObject();

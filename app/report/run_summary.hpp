@@ -33,6 +33,7 @@ struct RunSummary {
   std::string drop_reason;                    ///< table | floor | fell (nobody held it and it fell), "" if none
   LimitViolations limit_violations;
   int qp_failures = 0;
+  int qp_relaxed = 0;                         ///< steps solved only with the collision rows relaxed (not failures)
   std::string tracker = "simulated";          ///< simulated | csv | udp: where the person's poses came from
   long rejected_samples = 0;                  ///< tracker samples refused (malformed datagrams, non-finite, out of order)
   std::optional<double> grasp_error_pos;      ///< m

@@ -254,6 +254,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
         f.torque_violation |= std::abs(tau[j]) > m.tau_max[j] + 1e-6;
       }
       f.qp_failed = controller.lastStepFellBack();
+      f.qp_relaxed = controller.lastStepRelaxed();
       f.state = state;
       f.step_us = step_us;
       judge.observe(f);
@@ -289,6 +290,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
         log.putVec(cw.load().data(), 3);
         log.putVec(cw.feedForward().data(), 3);
         log.put(adapter.gripperForce());
+        log.put(controller.lastSlack());
         log.end();
       }
 

@@ -41,6 +41,10 @@ class CollisionConstraint : public Constraint {
 
   const std::string& name() const override { return name_; }
   int maxRows() const override { return cmodel_.numPairs(); }
+  /// Soft: a person who moves in faster than the arm can escape must not
+  /// make the QP infeasible (and stop the arm); the rows are then relaxed by
+  /// the least common amount and the arm escapes as fast as its limits allow.
+  bool soft() const override { return true; }
 
   /// The person for the next compute(). Real-time safe (plain copy).
   void setEnvironment(const CollisionEnvironment& env) { env_ = env; }

@@ -15,6 +15,11 @@ class Constraint {
   virtual const std::string& name() const = 0;
   /// Most rows compute() may ever write (reserved once by the formulation).
   virtual int maxRows() const = 0;
+  /// Whether the QP may relax these rows, by the least amount, when the rows
+  /// cannot all hold (SoftRowRelaxation). Hard by default: limits the arm
+  /// physically has. Soft: rows that protect against a world the robot does
+  /// not control (a person may move into it faster than it can escape).
+  virtual bool soft() const { return false; }
   /// Writes up to maxRows() rows into C (maxRows() x kNumVars), lb, ub and
   /// returns how many it used. May also tighten chi_lb / chi_ub (never loosen).
   virtual int compute(const ControlContext& ctx, Eigen::Ref<Eigen::MatrixXd> C,

@@ -199,6 +199,7 @@ void Formulation::build(const ControlContext& ctx, QpProblem& problem) {
                                      problem.x_lb, problem.x_ub);
     if (used < 0) used = 0;
     if (used > m) used = m;
+    problem.soft_in.segment(n_in, used).setConstant(e.constraint->soft() ? 1 : 0);
     n_in += used;
   }
   problem.n_in = n_in;

@@ -27,6 +27,7 @@ void QpProblem::reserve(int num_vars, int capacity_eq, int capacity_in) {
   c_ub.setConstant(capacity_in, kInf);
   x_lb.setConstant(num_vars, -kInf);
   x_ub.setConstant(num_vars, kInf);
+  soft_in.setZero(capacity_in);
 }
 
 const char* toString(QpStatus status) {

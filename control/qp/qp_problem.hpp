@@ -35,12 +35,17 @@ struct QpProblem {
   Eigen::VectorXd c_ub;  ///< capacity_in
   Eigen::VectorXd x_lb;  ///< n
   Eigen::VectorXd x_ub;  ///< n
+  /// capacity_in; 1 marks an inequality row that may be relaxed when the
+  /// rows cannot all hold (SoftRowRelaxation), 0 a hard row. Solvers ignore it.
+  Eigen::VectorXi soft_in;
 
   /// Sizes all storage (allocates; call at start-up), zeroes it, and sets
   /// n_eq = n_in = 0, unbounded rows and unbounded variables.
   /// Throws InputError for num_vars < 1 or negative capacities.
   void reserve(int num_vars, int capacity_eq, int capacity_in);
   int capacityEq() const { return static_cast<int>(A_eq.rows()); }
+  /// Whether any of the n_in rows in use is soft.
+  bool hasSoftRows() const { return n_in > 0 && (soft_in.head(n_in).array() != 0).any(); }
   int capacityIn() const { return static_cast<int>(C.rows()); }
 };
 

@@ -15,6 +15,7 @@ struct Script {
   bool touch_person = false;
   bool drop = false;
   bool qp_fail = false;
+  int relaxed_steps = 0;  ///< steps solved with the collision rows relaxed
 };
 
 RunSummary play(const Script& sc, const std::string& fsm_outcome = "success") {
@@ -36,6 +37,7 @@ RunSummary play(const Script& sc, const std::string& fsm_outcome = "success") {
     if (sc.drop && f.time > sc.t_release) f.object_on_table = true;
     f.robot_human_contacts = (sc.touch_person && std::abs(f.time - 1.2) < 0.01) ? 1 : 0;
     f.qp_failed = sc.qp_fail && i == 100;
+    f.qp_relaxed = i >= 200 && i < 200 + sc.relaxed_steps;
     f.min_human_distance = 0.2 - 0.01 * std::min(f.time, 1.0);
     f.state = f.time < sc.t_grasp ? &approach : (f.time < sc.t_release ? &grasp : &retract);
     f.step_us = 10.0 + (i % 10);
@@ -95,6 +97,15 @@ TEST(OutcomeJudge, QpFailureIsUnsafe) {
   const RunSummary r = play(sc);
   EXPECT_EQ(r.outcome, "unsafe");
   EXPECT_EQ(r.qp_failures, 1);
+}
+
+TEST(OutcomeJudge, RelaxedStepsAreCountedNotFailures) {
+  Script sc;
+  sc.relaxed_steps = 30;
+  const RunSummary r = play(sc);
+  EXPECT_EQ(r.outcome, "success");
+  EXPECT_EQ(r.qp_relaxed, 30);
+  EXPECT_EQ(r.qp_failures, 0);
 }
 
 TEST(OutcomeJudge, NoExchangeAndFsmNotDoneIsTimeout) {

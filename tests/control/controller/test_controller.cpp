@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <memory>
 
 #include "control/controller.hpp"
 #include "control/so3.hpp"
@@ -171,6 +173,54 @@ TEST(Controller, InfeasibleQpFallsBackAndCounts) {
   // torques are clipped to the limits in force
   const Vector7 lim = 0.01 * panda().tau_max;
   EXPECT_TRUE((ctl.lastTau().cwiseAbs().array() <= lim.array() + 1e-12).all());
+}
+
+namespace {
+// A soft row demanding of joint 1 an acceleration twice its limit (as a
+// collision row does when a person moves in faster than the arm can escape).
+class ImpossibleEscape : public Constraint {
+ public:
+  const std::string& name() const override { return name_; }
+  int maxRows() const override { return 1; }
+  bool soft() const override { return true; }
+  int compute(const ControlContext& ctx, Eigen::Ref<Eigen::MatrixXd> C, Eigen::Ref<Eigen::VectorXd> lb,
+              Eigen::Ref<Eigen::VectorXd> ub, Eigen::Ref<Eigen::VectorXd>, Eigen::Ref<Eigen::VectorXd>) override {
+    C.row(0).setZero();
+    C(0, VariableLayout::kQdd) = 1.0;
+    lb[0] = 2.0 * ctx.model->a_max[0];
+    ub[0] = std::numeric_limits<double>::infinity();
+    return 1;
+  }
+
+ private:
+  std::string name_ = "impossible_escape";
+};
+}  // namespace
+
+TEST(Controller, InfeasibleSoftRowsAreRelaxedWithinTheLimits) {
+  for (const bool relax : {true, false}) {
+    ControllerConfig cfg = loadControllerConfig(defaultControllerConfigPath());
+    cfg.qp.relax_soft_rows = relax;
+    Controller ctl(panda(), cfg);
+    ctl.formulation().addConstraint(std::make_shared<ImpossibleEscape>());
+    KinematicSim sim;
+    sim.q = cfg.posture.target;
+    ctl.reset(sim.inputs());
+    ctl.step(sim.inputs());
+    const double a_lim = cfg.limits.acceleration_scale * panda().a_max[0];
+    if (relax) {
+      EXPECT_FALSE(ctl.lastStepFellBack());
+      EXPECT_TRUE(ctl.lastStepRelaxed());
+      EXPECT_EQ(ctl.relaxedCount(), 1);
+      // joint 1 escapes as fast as its (hard) limit allows, no faster
+      EXPECT_NEAR(ctl.lastQdd()[0], a_lim, 1e-6 * a_lim);
+      EXPECT_NEAR(ctl.lastSlack(), 2.0 * panda().a_max[0] - a_lim, 1e-3);
+    } else {
+      EXPECT_TRUE(ctl.lastStepFellBack());
+      EXPECT_FALSE(ctl.lastStepRelaxed());
+      EXPECT_EQ(ctl.lastSlack(), 0.0);
+    }
+  }
 }
 
 TEST(Controller, TaskSwitchesByName) {

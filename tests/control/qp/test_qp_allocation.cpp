@@ -14,6 +14,7 @@
 #include <random>
 
 #include "control/qp/goldfarb_idnani.hpp"
+#include "control/qp/soft_row_relaxation.hpp"
 #include "tests/control/qp/qp_test_problems.hpp"
 
 namespace {
@@ -148,6 +149,46 @@ TEST(QpAllocation, ThousandSolvesAfterReserveAllocateNothing) {
   EXPECT_GT(infeasible, 5);
   EXPECT_GT(invalid, 5);
   EXPECT_GT(warm, 500);
+}
+
+TEST(QpAllocation, RelaxedSolvesAfterReserveAllocateNothing) {
+  // infeasible problems whose soft rows conflict, relaxed every time
+  std::mt19937 rng(7);
+  test::RandomQpSpec spec;
+  spec.n = 13;
+  spec.n_eq = 0;
+  spec.n_in = 30;
+  QpProblem p;
+  test::makeRandomQp(spec, rng, p);
+  GoldfarbIdnaniSolver solver;
+  solver.reserve(SoftRowRelaxation::solverVars(p.n), p.capacityEq(),
+                 SoftRowRelaxation::solverRowsIn(p.capacityIn()));
+  SoftRowRelaxation relaxation;
+  relaxation.reserve(p.n, p.capacityEq(), p.capacityIn());
+  Eigen::VectorXd x(p.n);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  int relaxed = 0;
+
+  g_allocations = 0;
+  g_counting = true;
+  for (int k = 0; k < 200; ++k) {
+    // rows 0 and 1 demand opposite things of x_{k mod n}
+    p.C.topRows(2).setZero();
+    p.C(0, k % p.n) = 1.0;
+    p.C(1, k % p.n) = 1.0;
+    p.c_lb[0] = 1.0 + 0.01 * k;
+    p.c_ub[0] = kInf;
+    p.c_lb[1] = -kInf;
+    p.c_ub[1] = -1.0;
+    p.soft_in.setZero();
+    p.soft_in[0] = p.soft_in[1] = 1;
+    p.n_in = 20 + k % 11;
+    if (relaxation.solve(p, solver, x) == QpStatus::kOptimal) ++relaxed;
+  }
+  g_counting = false;
+
+  EXPECT_EQ(g_allocations.load(), 0);
+  EXPECT_GT(relaxed, 150);  // the loop exercised both phases
 }
 
 }  // namespace
