@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string_view>
 
+#include "fsm/handover/back_out.hpp"
 #include "fsm/handover/common_states.hpp"
 #include "fsm/handover/h2r_states.hpp"
 #include "fsm/handover/object_lost.hpp"
@@ -17,6 +18,7 @@ void registerHandoverTypes(Registry& r) {
   r.addState<Rest>("Rest");
   r.addState<Retract>("Retract");
   r.addState<Retreat>("Retreat");
+  r.addState<BackOut>("BackOut");
   r.addState("WaitForOffer", [] { return std::unique_ptr<State>(new WaitForPerson(false)); });
   r.addState("WaitForReceiver", [] { return std::unique_ptr<State>(new WaitForPerson(true)); });
   r.addState("ApproachObject", [] { return std::unique_ptr<State>(new Approach(false)); });

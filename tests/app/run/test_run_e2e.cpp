@@ -100,7 +100,8 @@ std::vector<std::string> documentedLogColumns() {
   for (const char* n : {"d_human", "d_table", "d_self", "ft_fx", "ft_fy", "ft_fz", "ft_tx", "ft_ty", "ft_tz",
                         "finger_width", "gripper_cmd", "speed_scale", "qp_status", "qp_iterations"})
     c.push_back(n);
-  for (const char* n : {"load_share", "load_fx", "load_fy", "load_fz", "ff_fx", "ff_fy", "ff_fz", "grip_force"})
+  for (const char* n : {"load_share", "load_fx", "load_fy", "load_fz", "ff_fx", "ff_fy", "ff_fz", "grip_force",
+                        "qp_slack"})
     c.push_back(n);
   return c;
 }
@@ -288,8 +289,9 @@ TEST(RunEndToEnd, RobotToHumanGivesTheObject) {
   EXPECT_EQ(s.handovers, 1);
   EXPECT_EQ(s.aborts, 0);
   const std::vector<std::string> seq = leaves(s.states);
-  EXPECT_TRUE(inOrder(seq, {"HoldReady", "Present", "Release", "ConfirmGone", "Retract", "Done"})) << joined(s.states);
-  EXPECT_TRUE(endsWith(seq, {"Release", "ConfirmGone", "Retract", "Done"})) << joined(s.states);
+  EXPECT_TRUE(inOrder(seq, {"HoldReady", "Present", "Release", "ConfirmGone", "BackOut", "Retract", "Done"}))
+      << joined(s.states);
+  EXPECT_TRUE(endsWith(seq, {"Release", "ConfirmGone", "BackOut", "Retract", "Done"})) << joined(s.states);
   for (const auto& st : s.states)
     if (st != "Done") {
       EXPECT_NE(st.find("RobotToHuman/"), std::string::npos) << st;

@@ -2,6 +2,7 @@
 // config/fsm.yaml, driven by the toy world.
 #include <gtest/gtest.h>
 
+#include "fsm/handover/perception_checks.hpp"
 #include "tests/fsm/handover/fake_world.hpp"
 
 namespace handover::fsm::test {
@@ -30,6 +31,25 @@ std::function<void(World&)> receiverWhoPulls(bool pulls) {
   };
 }
 
+TEST(HandoverR2H, FingersBackOutAlongTheApproachAxisBeforeTurningAway) {
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+  rig.world.moveHand(kReceive, 0.5);
+  rig.person = receiverWhoPulls(true);
+  ASSERT_TRUE(rig.runUntilState("BackOut", 20.0)) << rig.fsm->activePath();
+  const Isometry at_release = rig.world.tcp;
+  const Vector3 approach = at_release.linear().col(2);
+  // the target: straight back along the approach axis, orientation kept
+  ASSERT_TRUE(rig.ctl.pose_active);
+  EXPECT_FALSE(rig.ctl.tracking);
+  EXPECT_LT((rig.ctl.pose.translation() - (at_release.translation() - 0.08 * approach)).norm(), 0.01);
+  EXPECT_LT(rotationError(rig.ctl.pose, at_release), 1e-6);
+  ASSERT_TRUE(rig.runUntilState("Retract", 5.0)) << rig.fsm->activePath();
+  const Vector3 moved = rig.world.tcp.translation() - at_release.translation();
+  EXPECT_GT(-moved.dot(approach), 0.06);                                // backed out
+  EXPECT_LT((moved + moved.dot(-approach) * approach).norm(), 0.02);     // not sideways
+}
+
 TEST(HandoverR2H, SuccessfulGiveVisitsEveryPhase) {
   Rig rig(true);
   ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
@@ -37,7 +57,7 @@ TEST(HandoverR2H, SuccessfulGiveVisitsEveryPhase) {
   rig.person = receiverWhoPulls(true);
   ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 20.0)) << rig.fsm->activePath();
   EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "HoldReady", "WaitForReceiver", "Approach", "Present",
-                                  "DetectPull", "Release", "ConfirmGone", "Retract", "Done"}));
+                                  "DetectPull", "Release", "ConfirmGone", "BackOut", "Retract", "Done"}));
   EXPECT_STREQ(rig.fsm->stats().outcome, "success");
   EXPECT_EQ(rig.fsm->stats().handovers, 1);
   EXPECT_EQ(rig.fsm->stats().aborts, 0);
