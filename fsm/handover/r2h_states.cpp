@@ -89,7 +89,10 @@ void DetectPull::onStart(HandoverContext& ctx) {
   since_ = -1.0;
   ctx.force_holding = ctx.force;  // removes the object's (and hand's) weight from the test
   ctrl().enableTracking(false);
-  ctrl().setPoseTarget(ctx.in.tcp_pose);  // hold still so a pull builds force
+  // hold still so a pull builds force - where the object was to be
+  // presented: Present accepts a TCP short of it by up to its tolerance,
+  // and the last centimetres are what put the object in the hand
+  ctrl().setPoseTarget(ctx.in.target_pose);
 }
 
 bool DetectPull::onRun(HandoverContext& ctx) {

@@ -50,6 +50,20 @@ TEST(HandoverR2H, FingersBackOutAlongTheApproachAxisBeforeTurningAway) {
   EXPECT_LT((moved + moved.dot(-approach) * approach).norm(), 0.02);     // not sideways
 }
 
+TEST(HandoverR2H, WaitingForThePullHoldsAtThePresentationPoseNotShortOfIt) {
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+  rig.world.moveHand(kReceive, 0.5);
+  ASSERT_TRUE(rig.runUntilState("DetectPull", 20.0)) << rig.fsm->activePath();
+  // the hold target is where the object is to be presented, even when
+  // Present accepted a TCP a few centimetres short of it
+  const HandoverInput in = rig.world.input(rig.ctl);
+  ASSERT_GT(positionError(in.tcp_pose, in.target_pose), 0.002);  // the TCP is short of it here
+  ASSERT_TRUE(rig.ctl.pose_active);
+  EXPECT_LT(positionError(rig.ctl.pose, in.target_pose), 1e-4);
+  EXPECT_LT(rotationError(rig.ctl.pose, in.target_pose), 0.01);
+}
+
 TEST(HandoverR2H, SuccessfulGiveVisitsEveryPhase) {
   Rig rig(true);
   ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
