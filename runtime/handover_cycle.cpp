@@ -129,6 +129,13 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   cw.sensor_acceleration = controller_.sensorAcceleration();
   cw.at_rest = arm.qd.norm() < settings_.controller.contact_wrench.rest_speed;
   cw.gripper_closed = adapter_.gripperWidth() < 0.5 * settings_.gripper_open_width;
+  // the robot alone carries the object: the state machine set its payload, no
+  // phase shares it with the person, and no hand of theirs is at the gripper
+  // (the TCP of the last step: one cycle old)
+  const bool hand_at_gripper =
+      env.person_valid && (env.hand.translation() - controller_.tcpPose().translation()).norm() <
+                              settings_.controller.contact_wrench.shared_distance;
+  cw.carried_alone = adapter_.payloadSet() && !adapter_.handClearanceRelaxed() && !hand_at_gripper;
   control::Payload object;
   object.mass = settings_.object.mass;
   object.com = machine_->context().comInTcp();  // the grasp the state machine tracks or closed on

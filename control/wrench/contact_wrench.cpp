@@ -15,7 +15,8 @@ ContactWrenchEstimator::ContactWrenchEstimator(const Model& model, const Contact
                     model.frames[model.frameId("tcp")].placement),
       gravity_(model.gravity),
       alpha_(period / (std::max(0.0, settings.filter_tau) + period)),
-      calibrator_(std::max(1, static_cast<int>(std::lround(settings.calibration_time / period)))) {
+      calibrator_(std::max(1, static_cast<int>(std::lround(settings.calibration_time / period)))),
+      ff_step_(settings.ramp_time > 0.0 ? std::min(1.0, period / settings.ramp_time) : 1.0) {
   held_at_start_ = tool_;
 }
 
@@ -40,6 +41,7 @@ void ContactWrenchEstimator::start(const Payload& object, bool holds) {
   payload_.mass = share_ * object_.mass;
   payload_.inertia_com = share_ * object_.inertia_com;
   feed_forward_.setZero();
+  ff_gain_ = 0.0;
 }
 
 void ContactWrenchEstimator::update(const ContactWrenchInput& in) {
@@ -79,19 +81,31 @@ void ContactWrenchEstimator::update(const ContactWrenchInput& in) {
   payload_.inertia_com = share_ * object_.inertia_com;
 
   // 6. the rest is the known external wrench
-  if (!settings_.feed_forward || !calibrator_.done()) {  // an unknown offset would be fed forward too
+  using Mode = ContactWrenchSettings::FeedForward;
+  const bool wanted = calibrator_.done() &&  // an unknown offset would be fed forward too
+                      (settings_.feed_forward == Mode::kAlways ||
+                       (settings_.feed_forward == Mode::kCarry && in.carried_alone));
+  ff_gain_ = std::clamp(ff_gain_ + (wanted ? ff_step_ : -ff_step_), 0.0, 1.0);
+  if (ff_gain_ == 0.0) {
     feed_forward_.setZero();
     return;
   }
   const Vector6 modelled = hangingWrench(objectInSensor(share_), R, g_eff);
-  feed_forward_.head<3>() = load_.head<3>() - R * modelled.head<3>();
-  feed_forward_.tail<3>() = load_.tail<3>() - R * modelled.tail<3>();
+  feed_forward_.head<3>() = ff_gain_ * (load_.head<3>() - R * modelled.head<3>());
+  feed_forward_.tail<3>() = ff_gain_ * (load_.tail<3>() - R * modelled.tail<3>());
 }
 
 ContactWrenchSettings parseContactWrenchSettings(const YamlReader& s) {
   ContactWrenchSettings c;
-  if (!s.isMap()) s.fail("expected a map with feed_forward, filter_tau, calibration_time, rest_speed");
-  if (auto v = s.optionalChild("feed_forward")) c.feed_forward = v->asBool();
+  if (!s.isMap())
+    s.fail("expected a map with feed_forward, ramp_time, shared_distance, filter_tau, calibration_time, rest_speed");
+  if (auto v = s.optionalChild("feed_forward")) {
+    using Mode = ContactWrenchSettings::FeedForward;
+    const std::string m = v->asEnum({"off", "carry", "always", "false", "true"});
+    c.feed_forward = (m == "carry") ? Mode::kCarry : (m == "always" || m == "true") ? Mode::kAlways : Mode::kOff;
+  }
+  if (auto v = s.optionalChild("ramp_time")) c.ramp_time = v->checkRange(v->asDouble(), 0.0, 5.0);
+  if (auto v = s.optionalChild("shared_distance")) c.shared_distance = v->checkRange(v->asDouble(), 0.0, 2.0);
   if (auto v = s.optionalChild("filter_tau")) c.filter_tau = v->checkRange(v->asDouble(), 0.0, 1.0);
   if (auto v = s.optionalChild("calibration_time")) c.calibration_time = v->checkRange(v->asDouble(), 0.001, 10.0);
   if (auto v = s.optionalChild("rest_speed")) c.rest_speed = v->checkRange(v->asDouble(), 1e-6, 1.0);

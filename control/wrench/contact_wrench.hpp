@@ -15,8 +15,16 @@
 //   6. feed-forward  the filtered load minus what that payload already puts in
 //                  the model (its weight and inertial force): the rest is the
 //                  known external wrench the dynamics hold (Controller::
-//                  setExternalWrench), e.g. the share the person still
-//                  carries, or the receiver's pull.
+//                  setExternalWrench). Mode `carry`: only while the robot
+//                  carries the object alone - then the rest is the model's
+//                  error about the object (where its mass really sits in the
+//                  grip), which otherwise turns the wrist: its joints' small
+//                  inertia makes the acceleration-level gains a weak spring
+//                  (0.06 N m held joint 7 0.6 rad off its goal). While a
+//                  person shares the object the rest is their force, and
+//                  feeding back a force the robot's own push causes through a
+//                  rigid grip would push harder (mode `always`, kept for
+//                  experiments). Switching ramps over ramp_time.
 //
 // Frames: world (z up) unless said; the wrench is [force (N); torque (N m)
 // about the "ft_sensor" origin]. Real-time safety: update() and the
@@ -32,7 +40,12 @@ namespace handover::control {
 
 /// config/controller.yaml `contact_wrench`.
 struct ContactWrenchSettings {
-  bool feed_forward = false;      ///< hand the rest of the load to the dynamics (off: estimate and log only; docs/method.md)
+  enum class FeedForward { kOff, kCarry, kAlways };
+  /// When the rest of the load goes to the dynamics (off: estimate and log only; docs/method.md).
+  FeedForward feed_forward = FeedForward::kCarry;
+  double ramp_time = 0.2;         ///< s, the feed-forward fades in and out over this
+  /// m: a person's grip point this close to the TCP may be holding the object (no carry feed-forward).
+  double shared_distance = 0.15;
   double filter_tau = 0.01;       ///< s, low-pass time constant of the load
   double calibration_time = 0.2;  ///< s of readings at rest that calibrate the sensor offset
   double rest_speed = 0.02;       ///< rad/s, joint speed norm below which the arm is at rest
@@ -45,6 +58,7 @@ struct ContactWrenchInput {
   Vector3 sensor_acceleration = Vector3::Zero();///< m/s^2, world, of the sensor origin (the model's)
   bool at_rest = false;                         ///< the arm is still (calibration samples)
   bool gripper_closed = false;                  ///< the fingers are commanded closed (may hold the object)
+  bool carried_alone = false;                   ///< the robot alone carries the object (mode carry)
 };
 
 class ContactWrenchEstimator {
@@ -100,6 +114,8 @@ class ContactWrenchEstimator {
   double share_ = 0.0;
   Payload payload_;
   Vector6 feed_forward_ = Vector6::Zero();
+  double ff_gain_ = 0.0;      ///< 0..1, the feed-forward's ramp
+  double ff_step_ = 1.0;      ///< gain change per update (period / ramp_time)
 };
 
 /// config/controller.yaml's `contact_wrench` section (optional; defaults

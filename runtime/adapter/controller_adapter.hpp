@@ -51,6 +51,8 @@ class ControllerAdapter : public fsm::ControllerInterface {
 
   fsm::ObservationTarget observationTarget() const { return target_kind_; }
   bool payloadSet() const { return payload_set_; }
+  /// The state machine says the person's hand and the gripper share the object.
+  bool handClearanceRelaxed() const { return hand_relaxed_; }
   double gripperWidth() const { return gripper_width_; }
   double gripperForce() const { return gripper_force_; }
   bool trackingEnabled() const { return tracking_on_; }

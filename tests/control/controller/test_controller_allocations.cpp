@@ -45,7 +45,7 @@ TEST(ControllerAllocations, NoHeapAllocationInTheControlStep) {
   Isometry target = ctl.tcpPose();
   // the wrist load estimator the cycle runs before each step (runtime/handover_cycle.cpp, stage 6b)
   ContactWrenchSettings cws;
-  cws.feed_forward = true;
+  cws.feed_forward = ContactWrenchSettings::FeedForward::kAlways;
   ContactWrenchEstimator load(model, cws, ctl.config().period);
   Payload object;
   object.mass = 1.0;

@@ -34,12 +34,14 @@ struct Fixture {
     w.head<3>() += R.transpose() * extra;
     return w;
   }
-  void run(ContactWrenchEstimator& est, const Vector6& reading, bool closed, int cycles, bool at_rest = false) const {
+  void run(ContactWrenchEstimator& est, const Vector6& reading, bool closed, int cycles, bool at_rest = false,
+           bool carried_alone = false) const {
     ContactWrenchInput in;
     in.reading = reading;
     in.sensor_rotation = R;
     in.gripper_closed = closed;
     in.at_rest = at_rest;
+    in.carried_alone = carried_alone;
     for (int i = 0; i < cycles; ++i) est.update(in);
   }
 };
@@ -69,7 +71,8 @@ TEST(ContactWrench, LoadShareFollowsTheWeightOnTheSensor) {
 TEST(ContactWrench, FeedForwardIsWhatThePayloadDoesNotExplain) {
   Fixture f;
   ContactWrenchSettings s;
-  s.feed_forward = true;
+  s.feed_forward = ContactWrenchSettings::FeedForward::kAlways;
+  s.ramp_time = 0.0;
   ContactWrenchEstimator est(f.model, s, kDt);
   est.start(f.object, true);  // starts holding: calibrates with the object
   f.run(est, f.reading(1.0), true, 300, true);
@@ -83,12 +86,42 @@ TEST(ContactWrench, FeedForwardIsWhatThePayloadDoesNotExplain) {
   EXPECT_LT(est.feedForward().segment<2>(1).norm(), 1e-2);
 
   // off: estimate only
-  ContactWrenchEstimator off(f.model, ContactWrenchSettings{}, kDt);
+  ContactWrenchSettings off_settings;
+  off_settings.feed_forward = ContactWrenchSettings::FeedForward::kOff;
+  ContactWrenchEstimator off(f.model, off_settings, kDt);
   off.start(f.object, true);
   f.run(off, f.reading(1.0), true, 300, true);
   f.run(off, f.reading(0.5, Vector3(8.0, 0.0, 0.0)), true, 300);
   EXPECT_NEAR(off.loadShare(), 0.5, 1e-3);
   EXPECT_EQ(off.feedForward(), Vector6::Zero());
+}
+
+TEST(ContactWrench, CarryModeFeedsForwardOnlyWhatTheRobotCarriesAloneAndRamps) {
+  Fixture f;
+  ContactWrenchSettings s;
+  s.feed_forward = ContactWrenchSettings::FeedForward::kCarry;
+  s.ramp_time = 0.2;
+  ContactWrenchEstimator est(f.model, s, kDt);
+  est.start(f.object, true);
+  f.run(est, f.reading(1.0), true, 300, true);
+  ASSERT_TRUE(est.calibrated());
+  // the object sits 3 cm off where the model puts it: a torque the payload does not explain
+  Fixture shifted = f;
+  shifted.object.com = Vector3(0.03, 0.0, 0.02);
+  const Vector6 reading = shifted.reading(1.0);
+  // a person shares the object: nothing is fed forward
+  f.run(est, reading, true, 300, false, false);
+  EXPECT_EQ(est.feedForward(), Vector6::Zero());
+  // the robot alone: the torque error is fed forward, faded in over ramp_time
+  f.run(est, reading, true, 100, false, true);
+  const double half_way = est.feedForward().tail<3>().norm();
+  f.run(est, reading, true, 200, false, true);
+  const double full = est.feedForward().tail<3>().norm();
+  EXPECT_NEAR(full, 1.0 * 9.81 * 0.03, 0.02);  // m g x the shift
+  EXPECT_NEAR(half_way, 0.5 * full, 0.05 * full);
+  // a person takes hold again: faded out
+  f.run(est, reading, true, 250, false, false);
+  EXPECT_EQ(est.feedForward(), Vector6::Zero());
 }
 
 TEST(ContactWrench, NonFiniteReadingsKeepTheEstimate) {
