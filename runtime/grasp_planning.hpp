@@ -1,7 +1,8 @@
 // The grasp planner of the handover cycle: grasp selection and upright
 // placement (control/grasp) on the robot's own model, fed by perception and
 // read by the state machine (fsm::TrackingPlan in its input, and
-// fsm::PlannerInterface for placements when a phase starts).
+// fsm::PlannerInterface for the placements a carrying state asks for, answered
+// in HandoverCycle::plan).
 //
 // Take: while the person holds the object, each new object sample re-selects
 // among the grasps the object admits (declared grasps, every turn about a

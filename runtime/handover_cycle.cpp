@@ -64,7 +64,9 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
 }
 
 void HandoverCycle::plan() {
-  if (planning_) planning_->update(*estimate_, control_in_.q, adapter_.payloadSet());
+  if (!planning_) return;
+  planning_->update(*estimate_, control_in_.q, adapter_.payloadSet());
+  machine_->plan();  // the carry request of the last step, if any
 }
 
 void HandoverCycle::start(const io::ArmState& arm, bool holds_object) {

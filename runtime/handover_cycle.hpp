@@ -11,7 +11,9 @@
 //
 // Stages of step(t, arm, source), in this order:
 //   0. plan        (plan(), before step, not timed with it) grasp or
-//                  presentation choice from the previous cycle's estimate.
+//                  presentation choice from the previous cycle's estimate;
+//                  the answer to a carry request a state posted in the
+//                  previous step (the held object's upright placement).
 //   1. perceive    drain `source` of the samples that arrived by t; the
 //                  estimate at t (hand, forearm, upper arm, object). Who holds
 //                  the object is the payload the state machine set in the
@@ -48,7 +50,7 @@
 //                       Controller::step at the previous q (before the first
 //                       step: from start()'s reset at the start state);
 //   as last commanded   observation target kind, object held (payload set);
-//   as last planned     object_plan, hand_plan (stage 0).
+//   as last planned     object_plan, hand_plan, the carry answer (stage 0).
 //
 // Frames: world (z up, robot base at the origin); SI units.
 // Real-time: step() allocates nothing and does no I/O (the controller's QP
@@ -118,10 +120,14 @@ class HandoverCycle {
 
   /// The planning stage, outside the 1 ms step: re-selects the grasp (take)
   /// or the presentation (give) when perception has a new sample since the
-  /// last call, from the last step's estimate and q. Call it once per cycle
-  /// before step() (it returns at once without a new sample), or from a
-  /// slower thread on a real robot (then hand over the plans under a lock).
-  /// No allocation; 0.1-1 ms per new sample (docs/performance.md).
+  /// last call, from the last step's estimate and q, and answers the carry
+  /// request a state posted in the last step (upright placement of the held
+  /// object, HandoverFsm::plan). Call it once per cycle before step() (it
+  /// returns at once without a new sample or a request), or from a slower
+  /// thread on a real robot (then hand over the plans and the carry channel
+  /// under a lock). No allocation; 0.1-1 ms per new sample, about 1.5 ms per
+  /// carry request, one when Retract, HoldReady or Retreat starts with the
+  /// object in the gripper (docs/performance.md).
   void plan();
 
   /// One cycle at time `t` (s): stages 1-8 above. The reference stays valid

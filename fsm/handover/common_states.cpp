@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "fsm/handover/held_object_goal.hpp"
 #include "fsm/handover/perception_checks.hpp"
 
 namespace handover::fsm {
@@ -55,21 +54,23 @@ void Retract::configure(const YamlReader& def) {
 }
 
 void Retract::onStart(HandoverContext& ctx) {
-  goal_ = namedPose(*ctx.params, pose_);
+  Isometry goal = namedPose(*ctx.params, pose_);
   if (keep_yaw_) {
     // the named pose turned about the vertical to the TCP's current turn: no
     // pointless wrist rotation while carrying the object away
-    const Eigen::Matrix3d M = ctx.in.tcp_pose.linear() * goal_.linear().transpose();
+    const Eigen::Matrix3d M = ctx.in.tcp_pose.linear() * goal.linear().transpose();
     const double yaw = std::atan2(M(1, 0) - M(0, 1), M(0, 0) + M(1, 1));
-    goal_.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * goal_.linear();
+    goal.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * goal.linear();
   }
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(ObservationTarget::kNone);
-  goal_ = carryHeldObject(ctx, ctrl(), goal_, handedUpAxis(ctx));  // after a take
+  carry_.start(ctx, ctrl(), goal, handedUpAxis(ctx));  // after a take
 }
 
 bool Retract::onRun(HandoverContext& ctx) {
-  const Isometry& goal = goal_;
+  carry_.update(ctx, ctrl());
+  if (carry_.waiting()) return false;
+  const Isometry& goal = carry_.goal();
   if (positionError(ctx.in.tcp_pose, goal) <= pos_tol_ && rotationError(ctx.in.tcp_pose, goal) <= rot_tol_ &&
       ctx.in.tcp_velocity.head<3>().norm() <= settle_speed_) {
     setOutput(stowed_);
@@ -77,6 +78,8 @@ bool Retract::onRun(HandoverContext& ctx) {
   }
   return false;
 }
+
+void Retract::onTeardown(HandoverContext& ctx) { carry_.stop(ctx); }
 
 Retreat::Retreat() : retry_(declareOutput("Retry")), give_up_(declareOutput("GiveUp")) {}
 
@@ -92,11 +95,12 @@ void Retreat::onStart(HandoverContext& ctx) {
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(ObservationTarget::kNone);
   // holding on after an abort: only a give still holds the object here
-  goal_ = carryHeldObject(ctx, ctrl(), ctx.params->safe_pose, presentedUpAxis(ctx));
+  carry_.start(ctx, ctrl(), ctx.params->safe_pose, presentedUpAxis(ctx));
 }
 
 bool Retreat::onRun(HandoverContext& ctx) {
-  if (positionError(ctx.in.tcp_pose, goal_) > pos_tol_ ||
+  carry_.update(ctx, ctrl());
+  if (carry_.waiting() || positionError(ctx.in.tcp_pose, carry_.goal()) > pos_tol_ ||
       ctx.in.tcp_velocity.head<3>().norm() > settle_speed_) {
     return false;
   }
@@ -108,5 +112,7 @@ bool Retreat::onRun(HandoverContext& ctx) {
   }
   return true;
 }
+
+void Retreat::onTeardown(HandoverContext& ctx) { carry_.stop(ctx); }
 
 }  // namespace handover::fsm

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "fsm/handover/handover_state.hpp"
+#include "fsm/handover/held_object_goal.hpp"
 
 namespace handover::fsm {
 
@@ -30,7 +31,8 @@ class Rest : public HandoverState {
 
 /// [Stowed] Carries the TCP to a named pose (stow | safe | ready), tracking
 /// off, observation none; a held object goes upright near it when a planner
-/// is present (held_object_goal.hpp). Keys: pose, position_tolerance (m),
+/// is present (held_object_goal.hpp: the placement is asked for at the start
+/// and adopted once answered). Keys: pose, position_tolerance (m),
 /// orientation_tolerance_deg, settle_speed (m/s).
 class Retract : public HandoverState {
  public:
@@ -38,13 +40,14 @@ class Retract : public HandoverState {
   void configure(const YamlReader& def) override;
   void onStart(HandoverContext& ctx) override;
   bool onRun(HandoverContext& ctx) override;
+  void onTeardown(HandoverContext& ctx) override;
 
  private:
   int stowed_;
   std::string pose_ = "stow";
   double pos_tol_ = 0.02, rot_tol_ = 0.1, settle_speed_ = 0.02;
   bool keep_yaw_ = false;               ///< keep the TCP's turn about the vertical
-  Isometry goal_ = Isometry::Identity();
+  HeldObjectCarry carry_;               ///< the named pose, or an upright placement of a held object near it
 };
 
 /// [Retry, GiveUp] After an abort: counts it, goes to the safe pose, then
@@ -57,12 +60,13 @@ class Retreat : public HandoverState {
   void configure(const YamlReader& def) override;
   void onStart(HandoverContext& ctx) override;
   bool onRun(HandoverContext& ctx) override;
+  void onTeardown(HandoverContext& ctx) override;
 
  private:
   int retry_, give_up_;
   bool open_ = false;
   double pos_tol_ = 0.03, settle_speed_ = 0.03;
-  Isometry goal_ = Isometry::Identity();  ///< the safe pose, or an upright placement of a held object near it
+  HeldObjectCarry carry_;  ///< the safe pose, or an upright placement of a held object near it
 };
 
 }  // namespace handover::fsm

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "fsm/core/context.hpp"
+#include "fsm/handover/carry_request.hpp"
 #include "fsm/handover/controller_handle.hpp"
 #include "fsm/handover/handover_io.hpp"
 #include "fsm/handover/handover_params.hpp"
@@ -38,6 +39,8 @@ struct HandoverContext : Context {
   CommandLedger* ledger = nullptr;
   HandoverStats stats;
   PlannerInterface* planner = nullptr;  ///< optional (null: declared grasps and named poses only)
+  /// Upright placements the states ask for; answered outside the step (HandoverFsm::plan).
+  CarryChannel carry;
 
   /// The grasp on the object the take tracks and, once closed, holds
   /// (grasp frame in the object frame); starts as the declared grasp.

@@ -136,6 +136,12 @@ void HandoverFsm::step(const HandoverInput& input) {
   machine_->step(ctx_);
 }
 
+void HandoverFsm::plan() {
+  if (ctx_.planner == nullptr || !ctx_.carry.pending()) return;
+  const CarryRequest& r = ctx_.carry.request();
+  ctx_.carry.answer(ctx_.planner->uprightPlacement(r.object_in_tcp, r.up_axis, r.object_position, r.q));
+}
+
 void HandoverFsm::stop() { machine_->stop(ctx_); }
 
 }  // namespace handover::fsm

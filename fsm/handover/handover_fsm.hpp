@@ -3,9 +3,11 @@
 // and is stepped once per control cycle with the cycle's inputs.
 //
 //   auto fsm = HandoverFsm::fromFile(HandoverFsm::defaultConfigPath(), controller, object);
-//   every 1 ms: fsm->step(input);   log fsm->activePath(); read fsm->stats()
+//   every 1 ms: fsm->plan();  (with a planner, outside the timed step)
+//               fsm->step(input);   log fsm->activePath(); read fsm->stats()
 //
-// Construction is not RT safe; step(), activePath() and stats() are.
+// Construction is not RT safe; step(), activePath() and stats() are. plan()
+// allocates nothing but may run the planner's search (about 1.5 ms).
 #pragma once
 
 #include <memory>
@@ -37,6 +39,13 @@ class HandoverFsm {
   /// The grasp planner the states consult (optional; must outlive the
   /// machine). Without one they track the declared grasp and named poses.
   void setPlanner(PlannerInterface* planner) { ctx_.planner = planner; }
+  /// The planning stage, outside step(): answers the carry request a state
+  /// posted in an earlier step (an upright placement of the held object,
+  /// carry_request.hpp) with the planner's search; returns at once without
+  /// a planner or a request. With a planner, call it before every step (or
+  /// from a slower thread, under the same lock as step): a carrying state
+  /// waits for the answer before it can finish.
+  void plan();
   /// Tears down every active state (end of a run).
   void stop();
 

@@ -7,17 +7,18 @@
 // profile, a straight line between two configurations within the limits,
 // so it stays within them. A TCP pose task toward the same goal would follow
 // the shortest turn of the gripper, which may run the wrist into its limit.
-// RT safe apart from the planner's search (about 1 ms, once per phase start).
+//
+// The placement search (about 1.5 ms) never runs in the control step: the
+// carry posts a request (carry_request.hpp) and heads for the named pose at
+// once; the planning stage answers before the next step, and the carry
+// switches to the placement in that step (one cycle on the named pose).
+// RT safe: no search, no allocation.
 #pragma once
 
 #include "fsm/handover/handover_context.hpp"
 
 namespace handover::fsm {
 
-/// Sends the controller toward the goal for carrying the held object to
-/// `named` and returns the TCP pose it ends at: `named` through the pose
-/// task when there is no planner, the gripper holds nothing, or no upright
-/// placement was found; else the placement, in joint space.
 /// The axis of the object's frame (+-x, +-y, +-z) nearest to world up for the
 /// object at rotation R_obj: the way up it was handed over, squared to its own
 /// axes (a bottle stays standing, a baton held lying stays lying).
@@ -37,21 +38,52 @@ inline Vector3 presentedUpAxis(const HandoverContext& ctx) {
   return handedUpAxis(ctx.params->object_in_hand.linear());
 }
 
-/// `up_axis`: the object-frame axis to keep vertical (handedUpAxis or presentedUpAxis).
-inline Isometry carryHeldObject(HandoverContext& ctx, ControllerHandle& ctrl, const Isometry& named,
-                                const Vector3& up_axis) {
-  if (ctx.planner != nullptr && ctx.ledger->payloadSet()) {
+/// Carries the held object toward a named pose: a member of each state that
+/// carries one (Retract, HoldReady, Retreat), started in onStart, updated in
+/// every onRun, stopped in onTeardown.
+class HeldObjectCarry {
+ public:
+  /// Sends `named` through the pose task and, with a planner and the object
+  /// in the gripper, posts the placement request (`up_axis`: the object-frame
+  /// axis to keep vertical, handedUpAxis or presentedUpAxis).
+  void start(HandoverContext& ctx, ControllerHandle& ctrl, const Isometry& named, const Vector3& up_axis) {
+    goal_ = named;
+    request_ = 0;
+    ctrl.setPoseTarget(named);
+    if (ctx.planner == nullptr || !ctx.ledger->payloadSet()) return;
     const Isometry object_in_tcp = ctx.objectInTcp();
-    const Vector3 position = (named * object_in_tcp).translation();
-    const ArmPlacement placement = ctx.planner->uprightPlacement(object_in_tcp, up_axis, position, ctx.in.q);
-    if (placement.found) {
-      ctrl.clearPoseTarget();
-      ctrl.setPostureTarget(placement.q);
-      return placement.tcp;
-    }
+    request_ = ctx.carry.post(object_in_tcp, up_axis, (named * object_in_tcp).translation(), ctx.in.q);
   }
-  ctrl.setPoseTarget(named);
-  return named;
-}
+
+  /// Adopts the answer to this carry's request once it has come: a found
+  /// placement replaces the named pose by the move in joint space; none keeps
+  /// the named pose. Call at the start of every onRun.
+  void update(HandoverContext& ctx, ControllerHandle& ctrl) {
+    if (request_ == 0) return;
+    const ArmPlacement* answer = ctx.carry.answerTo(request_);
+    if (answer == nullptr) return;
+    request_ = 0;
+    if (!answer->found) return;
+    ctrl.clearPoseTarget();
+    ctrl.setPostureTarget(answer->q);
+    goal_ = answer->tcp;
+  }
+
+  /// Withdraws a request still waiting (the state ends first).
+  void stop(HandoverContext& ctx) {
+    ctx.carry.withdraw(request_);
+    request_ = 0;
+  }
+
+  /// The request has no answer yet: the goal may still change (a state does
+  /// not finish on the named pose while the placement may lie elsewhere).
+  bool waiting() const { return request_ != 0; }
+  /// The TCP pose the carry ends at: `named`, or the placement once adopted.
+  const Isometry& goal() const { return goal_; }
+
+ private:
+  Isometry goal_ = Isometry::Identity();
+  int request_ = 0;  ///< the request awaiting its answer (0: none)
+};
 
 }  // namespace handover::fsm

@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "fsm/handover/held_object_goal.hpp"
 #include "fsm/handover/perception_checks.hpp"
 #include "fsm/handover/tracking_setup.hpp"
 
@@ -21,17 +20,20 @@ void HoldReady::onStart(HandoverContext& ctx) {
   if (!ctx.ledger->payloadSet()) ctrl().setPayload(ctx.object.mass, ctx.comInTcp());
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(ObservationTarget::kHand);
-  goal_ = carryHeldObject(ctx, ctrl(), p.ready_pose, presentedUpAxis(ctx));
+  carry_.start(ctx, ctrl(), p.ready_pose, presentedUpAxis(ctx));
 }
 
 bool HoldReady::onRun(HandoverContext& ctx) {
-  if (positionError(ctx.in.tcp_pose, goal_) > pos_tol_ ||
+  carry_.update(ctx, ctrl());
+  if (carry_.waiting() || positionError(ctx.in.tcp_pose, carry_.goal()) > pos_tol_ ||
       ctx.in.tcp_velocity.head<3>().norm() > settle_speed_) {
     return false;
   }
   setOutput(ready_);
   return true;
 }
+
+void HoldReady::onTeardown(HandoverContext& ctx) { carry_.stop(ctx); }
 
 Present::Present()
     : presented_(declareOutput("Presented")), withdrawn_(declareOutput("Withdrawn")), pulled_(declareOutput("Pulled")) {}

@@ -2,11 +2,13 @@
 #pragma once
 
 #include "fsm/handover/handover_state.hpp"
+#include "fsm/handover/held_object_goal.hpp"
 
 namespace handover::fsm {
 
 /// [Ready] Keeps the object gripped (closes, sets the payload) and moves to
-/// params.ready_pose while observing the hand.
+/// params.ready_pose while observing the hand; the object goes upright near
+/// it when a planner is present (held_object_goal.hpp).
 /// Keys: position_tolerance (m), settle_speed (m/s).
 class HoldReady : public HandoverState {
  public:
@@ -14,11 +16,12 @@ class HoldReady : public HandoverState {
   void configure(const YamlReader& def) override;
   void onStart(HandoverContext& ctx) override;
   bool onRun(HandoverContext& ctx) override;
+  void onTeardown(HandoverContext& ctx) override;
 
  private:
   int ready_;
   double pos_tol_ = 0.03, settle_speed_ = 0.03;
-  Isometry goal_ = Isometry::Identity();  ///< the ready pose, or an upright placement of the object near it
+  HeldObjectCarry carry_;  ///< the ready pose, or an upright placement of the object near it
 };
 
 /// [Presented, Withdrawn] Tracks the presentation frame (still relative to

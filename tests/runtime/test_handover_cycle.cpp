@@ -2,7 +2,8 @@
 // the arm's sensing and the person's estimate are this cycle's; the TCP pose,
 // the tracking target and the robot-person distances the state machine sees
 // are those of the previous Controller::step; the command is this cycle's QP
-// torque with the state machine's gripper command.
+// torque with the state machine's gripper command. The carry's placement
+// search runs in plan(), never in step().
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -104,6 +105,72 @@ TEST(HandoverCycle, StartSetsTheGripperAndPayload) {
   EXPECT_TRUE(holding.adapter().payloadSet());
   EXPECT_DOUBLE_EQ(holding.step(0.0, armAt(q0, 0.0), person).gripper_width, 0.0);
   EXPECT_TRUE(holding.fsmInput().holds_object);
+}
+
+/// Nobody in view: no person, no samples.
+class NobodyInView : public perception::PoseSource {
+ public:
+  bool poll(double, perception::PoseSample&) override { return false; }
+};
+
+TEST(HandoverCycle, PlanAnswersTheCarryRequestTheStepPosted) {
+  CycleSettings s = defaultCycleSettings();
+  // a bottle held from above, 8 cm above its centre (the gripper points down)
+  control::grasp::GraspSpec top;
+  top.placement = Eigen::Translation3d(0.0, 0.0, 0.08) * Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX());
+  top.preference = s.grasp_selection.declared_preference;
+  s.object_grasps.push_back(top);
+  s.object.grasp_in_object = top.placement;
+  s.object.com_in_tcp = top.placement.inverse() * Eigen::Vector3d::Zero();
+  HandoverCycle cycle(s);
+  ASSERT_NE(cycle.planning(), nullptr);
+  const fsm::HandoverContext& ctx = cycle.machine().context();
+  const io::Vector7 q0 = cycle.controller().config().posture.target;
+  io::ArmState arm = armAt(q0, 0.0);
+  arm.qd.setZero();
+  NobodyInView nobody;
+  cycle.start(arm, true);  // a give: HoldReady carries the object to the ready pose
+  auto inHoldReady = [&] {
+    const std::string& p = cycle.machine().activePath();
+    return p.size() >= 9 && p.compare(p.size() - 9, 9, "HoldReady") == 0;
+  };
+  int k = 0;
+  for (; k < 10 && !inHoldReady(); ++k) {
+    cycle.plan();
+    arm.time = k * 0.001;
+    cycle.step(arm.time, arm, nobody);
+  }
+  ASSERT_TRUE(inHoldReady()) << cycle.machine().activePath();
+  // HoldReady asked in the step; the step did not search
+  ASSERT_TRUE(ctx.carry.pending());
+  const int id = ctx.carry.request().id;
+  EXPECT_EQ(ctx.carry.answerTo(id), nullptr);
+  const fsm::Isometry object_in_tcp = ctx.objectInTcp();
+  EXPECT_TRUE(ctx.carry.request().object_in_tcp.isApprox(object_in_tcp));
+  const Eigen::Vector3d near = (cycle.machine().params().ready_pose * object_in_tcp).translation();
+  EXPECT_TRUE(ctx.carry.request().object_position.isApprox(near));
+  EXPECT_TRUE(ctx.carry.request().q == arm.q);
+  // meanwhile the ready pose, through the pose task
+  EXPECT_TRUE(ctx.ledger->current().pose.active);
+  EXPECT_TRUE(ctx.ledger->current().pose.pose.isApprox(cycle.machine().params().ready_pose));
+
+  cycle.plan();
+  EXPECT_FALSE(ctx.carry.pending());
+  const fsm::ArmPlacement* answer = ctx.carry.answerTo(id);
+  ASSERT_NE(answer, nullptr);
+  ASSERT_TRUE(answer->found) << "a bottle held from above stands upright near the ready pose";
+  // the object upright (its z along world z) near where the ready pose puts it
+  const fsm::Isometry object = answer->tcp * object_in_tcp;
+  EXPECT_GT(object.linear().col(2).z(), std::cos(10.0 * M_PI / 180.0));
+  EXPECT_LT((object.translation() - near).norm(), 0.15);
+  EXPECT_TRUE(ctx.ledger->current().pose.active);  // taken when the state runs, in the step
+
+  arm.time = k * 0.001;
+  cycle.step(arm.time, arm, nobody);
+  EXPECT_TRUE(inHoldReady());
+  EXPECT_FALSE(ctx.ledger->current().pose.active);  // the move in joint space
+  EXPECT_TRUE(ctx.ledger->current().posture.active);
+  EXPECT_TRUE(ctx.ledger->current().posture.q == answer->q);
 }
 
 }  // namespace

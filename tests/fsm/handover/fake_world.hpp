@@ -226,6 +226,9 @@ struct Rig {
   std::unique_ptr<HandoverFsm> fsm;
   /// The scripted person, called every step before the machine (may be empty).
   std::function<void(World&)> person;
+  /// step() runs the planning stage (HandoverFsm::plan) before the machine,
+  /// as runtime::HandoverCycle does; false: the test answers when it wants.
+  bool plan_stage = true;
   explicit Rig(bool robot_starts_with_object = false) {
     ObjectInfo obj;
     obj.mass = world.mass;
@@ -241,6 +244,7 @@ struct Rig {
   }
   void step() {
     if (person) person(world);
+    if (plan_stage) fsm->plan();
     fsm->step(world.input(ctl));
     world.advance(ctl);
   }

@@ -1,7 +1,8 @@
 // The states and the grasp planner (fsm/handover/grasp_plan.hpp): Approach
 // follows the planner's choice and its IK configuration, Grasp commits to the
 // choice it started with, the payload's centre of mass follows the grasp
-// closed on, and a held object is carried upright in joint space.
+// closed on, and a held object is carried upright in joint space, with the
+// placement asked for in the step and searched in the planning stage.
 #include <gtest/gtest.h>
 
 #include "fsm/handover/held_object_goal.hpp"
@@ -133,6 +134,108 @@ TEST(PlannedTargets, HeldObjectIsCarriedUprightInJointSpace) {
   EXPECT_FALSE(rig.ctl.pose_active);   // no TCP pose task: the joints move
   EXPECT_TRUE(rig.ctl.posture_active);
   EXPECT_TRUE(rig.ctl.posture.isApprox(planner.answer.q));
+}
+
+TEST(PlannedTargets, TheCarrySearchRunsOutsideTheStepAndIsAdoptedOnceAnswered) {
+  Rig rig;
+  rig.plan_stage = false;  // this test answers
+  FakePlanner planner;
+  planner.answer.found = true;
+  planner.answer.q = Vector7::Constant(0.7);
+  planner.answer.tcp.translation() = Vector3(0.35, 0.1, 0.45);
+  rig.fsm->setPlanner(&planner);
+  rig.world.object_plan = sidePlan(2, 0.1);
+  takeUntilRetract(rig);
+  const HandoverContext& ctx = rig.fsm->context();
+  const Isometry& stow = rig.fsm->params().stow_pose;
+  // Retract asked in its step; no step searches
+  EXPECT_EQ(planner.calls, 0);
+  ASSERT_TRUE(ctx.carry.pending());
+  EXPECT_TRUE(ctx.carry.request().object_in_tcp.isApprox(rig.world.object_plan.target_in_observed.inverse()));
+  // where the named pose it sends (the stow pose turned about the vertical: keep_yaw) puts the object
+  EXPECT_TRUE(rig.ctl.pose_active);
+  EXPECT_TRUE(ctx.carry.request().object_position.isApprox((rig.ctl.pose * ctx.objectInTcp()).translation()));
+  // meanwhile the named pose, and Retract does not finish on it: the
+  // placement may lie elsewhere (the toy TCP reaches the stow pose and settles)
+  rig.runFor(3.0);
+  EXPECT_EQ(planner.calls, 0);
+  EXPECT_TRUE(rig.ctl.pose_active);
+  EXPECT_LT((rig.ctl.pose.translation() - stow.translation()).norm(), 1e-9);
+  EXPECT_LT((rig.world.tcp.translation() - stow.translation()).norm(), 0.01);
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Retract")) << rig.fsm->activePath();
+  // the planning stage answers; the state takes the answer in its next run
+  rig.fsm->plan();
+  EXPECT_EQ(planner.calls, 1);
+  EXPECT_FALSE(ctx.carry.pending());
+  EXPECT_TRUE(rig.ctl.pose_active);
+  rig.step();
+  EXPECT_FALSE(rig.ctl.pose_active);
+  EXPECT_TRUE(rig.ctl.posture_active);
+  EXPECT_TRUE(rig.ctl.posture.isApprox(planner.answer.q));
+  // one search per request
+  rig.fsm->plan();
+  rig.step();
+  EXPECT_EQ(planner.calls, 1);
+}
+
+TEST(PlannedTargets, AnAnswerToAnEarlierStatesRequestIsNeverAdopted) {
+  Rig rig(true);  // a give: HoldReady carries the object to the ready pose
+  rig.plan_stage = false;
+  FakePlanner planner;
+  planner.answer.found = true;
+  planner.answer.q = Vector7::Constant(0.7);
+  rig.fsm->setPlanner(&planner);
+  ASSERT_TRUE(rig.runUntilState("HoldReady", 1.0)) << rig.fsm->activePath();
+  const HandoverContext& ctx = rig.fsm->context();
+  const int first = ctx.carry.request().id;
+  rig.fsm->plan();  // answered...
+  ASSERT_EQ(planner.calls, 1);
+  ASSERT_NE(ctx.carry.answerTo(first), nullptr);
+  // ...but the person comes too close before HoldReady runs again
+  rig.world.arm_distance = 0.02;
+  rig.step();
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "SafetyStop")) << rig.fsm->activePath();
+  // the person steps back: the machine starts over, and HoldReady asks again
+  rig.world.arm_distance = 1.0;
+  ASSERT_TRUE(rig.runUntilState("HoldReady", 2.0)) << rig.fsm->activePath();
+  EXPECT_GT(ctx.carry.request().id, first);
+  EXPECT_TRUE(ctx.carry.pending());
+  rig.runFor(0.02);
+  // the first answer was for the first HoldReady: the ready pose stays
+  EXPECT_TRUE(rig.ctl.pose_active);
+  EXPECT_TRUE(same(rig.ctl.pose, rig.fsm->params().ready_pose));
+  EXPECT_FALSE(rig.ctl.posture_active && rig.ctl.posture.isApprox(Vector7::Constant(0.7)));
+  // its own answer it takes
+  planner.answer.q = Vector7::Constant(-0.4);
+  rig.fsm->plan();
+  rig.step();
+  EXPECT_EQ(planner.calls, 2);
+  EXPECT_FALSE(rig.ctl.pose_active);
+  EXPECT_TRUE(rig.ctl.posture.isApprox(Vector7::Constant(-0.4)));
+}
+
+TEST(PlannedTargets, ARequestLeftByAnEndedStateIsNotSearched) {
+  Rig rig(true);
+  rig.plan_stage = false;
+  FakePlanner planner;
+  rig.fsm->setPlanner(&planner);
+  ASSERT_TRUE(rig.runUntilState("HoldReady", 1.0)) << rig.fsm->activePath();
+  EXPECT_TRUE(rig.fsm->context().carry.pending());
+  rig.world.arm_distance = 0.02;  // a safety stop ends HoldReady before any answer
+  rig.step();
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "SafetyStop")) << rig.fsm->activePath();
+  EXPECT_FALSE(rig.fsm->context().carry.pending());
+  rig.fsm->plan();
+  EXPECT_EQ(planner.calls, 0);
+}
+
+TEST(PlannedTargets, WithoutAPlannerTheCarryAsksNothing) {
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("HoldReady", 1.0)) << rig.fsm->activePath();
+  rig.step();
+  EXPECT_FALSE(rig.fsm->context().carry.pending());
+  EXPECT_TRUE(rig.ctl.pose_active);
+  EXPECT_TRUE(same(rig.ctl.pose, rig.fsm->params().ready_pose));
 }
 
 TEST(PlannedTargets, NoPlacementFallsBackToTheNamedPose) {
