@@ -38,6 +38,15 @@ struct FakePlanner : PlannerInterface {
   }
 };
 
+/// A placement found: joints all at 0.7 rad, the TCP at (0.35, 0.1, 0.45).
+ArmPlacement uprightAnswer() {
+  ArmPlacement a;
+  a.found = true;
+  a.q = Vector7::Constant(0.7);
+  a.tcp.translation() = Vector3(0.35, 0.1, 0.45);
+  return a;
+}
+
 /// The person offers, lets go once gripped for 0.1 s; runs until Retract has started.
 void takeUntilRetract(Rig& rig) {
   rig.world.moveHand(kMeet, 0.5);
@@ -122,9 +131,7 @@ TEST(PlannedTargets, PayloadCentreOfMassFollowsTheGraspClosedOn) {
 TEST(PlannedTargets, HeldObjectIsCarriedUprightInJointSpace) {
   Rig rig;
   FakePlanner planner;
-  planner.answer.found = true;
-  planner.answer.q = Vector7::Constant(0.7);
-  planner.answer.tcp.translation() = Vector3(0.35, 0.1, 0.45);
+  planner.answer = uprightAnswer();
   rig.fsm->setPlanner(&planner);
   rig.world.object_plan = sidePlan(2, 0.1);
   takeUntilRetract(rig);
@@ -140,9 +147,7 @@ TEST(PlannedTargets, TheCarrySearchRunsOutsideTheStepAndIsAdoptedOnceAnswered) {
   Rig rig;
   rig.plan_stage = false;  // this test answers
   FakePlanner planner;
-  planner.answer.found = true;
-  planner.answer.q = Vector7::Constant(0.7);
-  planner.answer.tcp.translation() = Vector3(0.35, 0.1, 0.45);
+  planner.answer = uprightAnswer();
   rig.fsm->setPlanner(&planner);
   rig.world.object_plan = sidePlan(2, 0.1);
   takeUntilRetract(rig);
