@@ -71,7 +71,7 @@ void HandoverCycle::plan() {
 
 void HandoverCycle::start(const io::ArmState& arm, bool holds_object) {
   if (holds_object) {
-    adapter_.setGripper(0.0, machine_->params().gripForce(settings_.object.mass));
+    adapter_.setGripper(0.0, machine_->params().gripForce(settings_.object.mass, machine_->context().comInTcp()));
     adapter_.setPayload(settings_.object.mass, settings_.object.com_in_tcp);
   } else {
     adapter_.setGripper(settings_.gripper_open_width, settings_.gripper_force);

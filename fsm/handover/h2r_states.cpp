@@ -100,7 +100,7 @@ bool Grasp::onRun(HandoverContext& ctx) {
     }
     if (!alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_)) return false;
     ctx.force_before_grasp = ctx.force;  // reference for the release test
-    ctrl().setGripper(ctx.params->gripper_close_width, ctx.params->gripForce(ctx.object.mass));
+    ctrl().setGripper(ctx.params->gripper_close_width, ctx.params->gripForce(ctx.object.mass, ctx.comInTcp()));
     closing_ = true;
     closed_at_ = last_time_ = ctx.time;
     last_width_ = ctx.in.finger_width;

@@ -1,11 +1,14 @@
 #include "fsm/handover/handover_params.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace handover::fsm {
 
-double HandoverParams::gripForce(double mass) const {
-  const double f = grip_margin * mass * (gravity + grip_acceleration) / (2.0 * grip_friction);
+double HandoverParams::gripForce(double mass, const Vector3& com_in_tcp) const {
+  const double load = grip_margin * mass * (gravity + grip_acceleration);
+  const double lever = std::hypot(com_in_tcp.x(), com_in_tcp.z());  // from the closing axis (TCP y)
+  const double f = std::max(load / (2.0 * grip_friction), load * lever / (2.0 * grip_torsional_friction));
   return std::min(grip_max_force, std::max(grip_min_force, f));
 }
 
@@ -73,6 +76,7 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
   {
     const YamlReader grip = g.child("grip");
     p.grip_friction = positive(grip, "friction", 2.0);
+    if (grip.has("torsional_friction")) p.grip_torsional_friction = positive(grip, "torsional_friction", 0.1);
     p.grip_margin = inRange(grip, "margin", 1.0, 10.0);
     p.grip_acceleration = inRange(grip, "acceleration", 0.0, 50.0);
     p.grip_min_force = positive(grip, "min_force", 140.0);

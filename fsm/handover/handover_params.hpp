@@ -32,15 +32,21 @@ struct HandoverParams {
   double gripper_force = 40.0;       ///< N, force limit while opening (and before a grasp)
   /// The grip on the object (gripper.grip): each finger presses with F, and
   /// friction holds 2 mu F against the object's weight and the retract's
-  /// accelerations: F = margin m (g + acceleration) / (2 mu), clipped to
-  /// [min_force, max_force].
+  /// accelerations, F >= margin m (g + acceleration) / (2 mu); and each pad's
+  /// torsional friction (mu_t F, N m) holds the moment of that weight about
+  /// the fingers' closing axis (TCP y), F >= margin m (g + acceleration) d /
+  /// (2 mu_t), d the centre of mass's distance from that axis (a baton held
+  /// 10 cm off its centre needs twice the force of one held at its centre).
+  /// The larger, clipped to [min_force, max_force].
   double grip_friction = 0.5;        ///< mu, finger-object friction coefficient assumed
+  double grip_torsional_friction = 0.01;  ///< mu_t, m: torque per newton of normal force at one pad
   double grip_margin = 2.0;          ///< safety factor on the friction force
   double grip_acceleration = 3.0;    ///< m/s^2 the held object may see beyond gravity
   double grip_min_force = 10.0;      ///< N
   double grip_max_force = 70.0;      ///< N, the gripper's continuous force
-  /// Grasp force (N) for an object of `mass` kg. RT safe.
-  double gripForce(double mass) const;
+  /// Grasp force (N) for an object of `mass` kg whose centre of mass sits at
+  /// `com_in_tcp` (m, TCP frame). RT safe.
+  double gripForce(double mass, const Vector3& com_in_tcp) const;
   // wrist force-torque sensor
   double ft_filter_tau = 0.05;       ///< s, low-pass time constant of the world-frame force
   /// Change of the world z force reading per unit of hanging weight: -1 when

@@ -16,7 +16,7 @@ void HoldReady::configure(const YamlReader& def) {
 
 void HoldReady::onStart(HandoverContext& ctx) {
   const HandoverParams& p = *ctx.params;
-  ctrl().setGripper(p.gripper_close_width, p.gripForce(ctx.object.mass));  // keep the grip
+  ctrl().setGripper(p.gripper_close_width, p.gripForce(ctx.object.mass, ctx.comInTcp()));  // keep the grip
   if (!ctx.ledger->payloadSet()) ctrl().setPayload(ctx.object.mass, ctx.comInTcp());
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(ObservationTarget::kHand);

@@ -108,3 +108,31 @@ TEST(HandoverConfig, BadObjectMass) {
 
 }  // namespace
 }  // namespace handover::fsm::test
+
+namespace handover::fsm::test {
+namespace {
+
+TEST(GripForce, BudgetsTheWeightAndItsMomentAboutTheClosingAxis) {
+  HandoverParams p;
+  p.gravity = 9.81;
+  p.grip_friction = 0.5;
+  p.grip_torsional_friction = 0.01;
+  p.grip_margin = 2.0;
+  p.grip_acceleration = 3.0;
+  p.grip_min_force = 10.0;
+  p.grip_max_force = 70.0;
+  const double load = 2.0 * 0.8 * (9.81 + 3.0);
+  // centred between the fingers: friction alone
+  EXPECT_NEAR(p.gripForce(0.8, Vector3::Zero()), load / (2.0 * 0.5), 1e-9);
+  // along the closing axis (y) the weight has no lever about it
+  EXPECT_NEAR(p.gripForce(0.8, Vector3(0.0, 0.03, 0.0)), load / (2.0 * 0.5), 1e-9);
+  // 3 cm off the axis: the moment decides
+  EXPECT_NEAR(p.gripForce(0.8, Vector3(0.03, 0.0, 0.0)), load * 0.03 / (2.0 * 0.01), 1e-9);
+  EXPECT_GT(p.gripForce(0.8, Vector3(0.0, 0.0, 0.03)), p.gripForce(0.8, Vector3::Zero()));
+  // clipped to what the gripper can give, and never below the minimum
+  EXPECT_DOUBLE_EQ(p.gripForce(0.8, Vector3(0.1, 0.0, 0.0)), 70.0);
+  EXPECT_DOUBLE_EQ(p.gripForce(0.05, Vector3::Zero()), 10.0);
+}
+
+}  // namespace
+}  // namespace handover::fsm::test
