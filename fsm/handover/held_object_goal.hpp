@@ -43,14 +43,24 @@ inline Vector3 presentedUpAxis(const HandoverContext& ctx) {
 /// every onRun, stopped in onTeardown.
 class HeldObjectCarry {
  public:
-  /// Sends `named` through the pose task and, with a planner and the object
-  /// in the gripper, posts the placement request (`up_axis`: the object-frame
-  /// axis to keep vertical, handedUpAxis or presentedUpAxis).
+  /// Sends `named` through the pose task and, with a planner, posts the
+  /// placement request: with the object in the gripper, an upright placement
+  /// of it (`up_axis`: the object-frame axis to keep vertical, handedUpAxis
+  /// or presentedUpAxis); with an empty gripper, the named pose itself with
+  /// its turn about the vertical left free (the TCP axis that points up in
+  /// `named` kept up). Either way the arm then moves in joint space to an IK
+  /// configuration within its limits: a pose task from a far, turned wrist
+  /// can stall against a joint limit on the way (an elbow at its limit after
+  /// a give whose wrist had turned 160 degrees).
   void start(HandoverContext& ctx, ControllerHandle& ctrl, const Isometry& named, const Vector3& up_axis) {
     goal_ = named;
     request_ = 0;
     ctrl.setPoseTarget(named);
-    if (ctx.planner == nullptr || !ctx.ledger->payloadSet()) return;
+    if (ctx.planner == nullptr) return;
+    if (!ctx.ledger->payloadSet()) {
+      request_ = ctx.carry.post(Isometry::Identity(), handedUpAxis(named.linear()), named.translation(), ctx.in.q);
+      return;
+    }
     const Isometry object_in_tcp = ctx.objectInTcp();
     request_ = ctx.carry.post(object_in_tcp, up_axis, (named * object_in_tcp).translation(), ctx.in.q);
   }

@@ -15,6 +15,10 @@
 
 namespace handover::fsm::test {
 
+/// Where the person's hand meets the robot (offer) and where it goes when they leave.
+inline const Vector3 kMeet(0.55, 0.0, 0.30);
+inline const Vector3 kAway(1.0, -0.3, 0.2);
+
 struct RecordingController : ControllerInterface {
   bool record = true;  ///< false: keep the state only (no allocation)
   std::vector<std::string> calls;

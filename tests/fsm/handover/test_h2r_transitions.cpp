@@ -9,8 +9,6 @@
 namespace handover::fsm::test {
 namespace {
 
-const Vector3 kMeet(0.55, 0.0, 0.30);
-const Vector3 kAway(1.0, -0.3, 0.2);
 
 /// Lets go once the robot has gripped the object for 0.1 s, and withdraws.
 std::function<void(World&)> releasesAfterGrip() {

@@ -9,8 +9,6 @@
 namespace handover::fsm::test {
 namespace {
 
-const Vector3 kMeet(0.55, 0.0, 0.30);
-const Vector3 kAway(1.0, -0.3, 0.2);
 
 /// Takes the object from the person (release after 0.1 s of grip, then the
 /// hand leaves) and runs until the robot retracts with it.

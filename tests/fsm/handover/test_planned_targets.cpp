@@ -11,7 +11,6 @@
 namespace handover::fsm::test {
 namespace {
 
-const Vector3 kMeet(0.55, 0.0, 0.30);
 
 /// A grasp from the side: approach along the object's x axis.
 TrackingPlan sidePlan(int index, double q_mark) {
@@ -29,11 +28,15 @@ TrackingPlan sidePlan(int index, double q_mark) {
 struct FakePlanner : PlannerInterface {
   int calls = 0;
   Isometry last_object_in_tcp = Isometry::Identity();
+  Vector3 last_up_axis = Vector3::Zero();
+  Vector3 last_position = Vector3::Zero();
   ArmPlacement answer;
-  ArmPlacement uprightPlacement(const Isometry& object_in_tcp, const Vector3&, const Vector3&,
+  ArmPlacement uprightPlacement(const Isometry& object_in_tcp, const Vector3& up_axis, const Vector3& position,
                                 const Vector7&) override {
     ++calls;
     last_object_in_tcp = object_in_tcp;
+    last_up_axis = up_axis;
+    last_position = position;
     return answer;
   }
 };
@@ -264,6 +267,27 @@ TEST(PlannedTargets, AHeldObjectKeepsTheWayUpItWasHandedOver) {
   // upside down
   const Eigen::Matrix3d flipped = Eigen::AngleAxisd(M_PI, Vector3::UnitY()).toRotationMatrix();
   EXPECT_TRUE(handedUpAxis(flipped).isApprox(-Vector3::UnitZ()));
+}
+
+TEST(PlannedTargets, AnEmptyGripperAlsoMovesInJointSpaceToTheNamedPoseWithItsTurnFree) {
+  Rig rig;
+  FakePlanner planner;
+  planner.answer = uprightAnswer();
+  rig.fsm->setPlanner(&planner);
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0)) << rig.fsm->activePath();
+  rig.world.moveHand(kAway, 0.8);  // the person changes their mind: Retreat, gripper empty
+  ASSERT_TRUE(rig.runUntilState("Retreat", 3.0)) << rig.fsm->activePath();
+  rig.runFor(0.01);
+  ASSERT_EQ(planner.calls, 1);
+  // the TCP itself is placed: at the safe pose's position, the TCP axis that
+  // points up there kept up (gripper down: -z), its turn left to the search
+  const Isometry& safe = rig.fsm->params().safe_pose;
+  EXPECT_TRUE(planner.last_object_in_tcp.isApprox(Isometry::Identity()));
+  EXPECT_TRUE(planner.last_position.isApprox(safe.translation()));
+  EXPECT_TRUE(planner.last_up_axis.isApprox(handedUpAxis(Eigen::Matrix3d(safe.linear()))));
+  EXPECT_FALSE(rig.ctl.pose_active);
+  EXPECT_TRUE(rig.ctl.posture.isApprox(planner.answer.q));
 }
 
 }  // namespace

@@ -9,7 +9,6 @@ namespace handover::fsm::test {
 namespace {
 
 const Vector3 kReceive(0.60, 0.0, 0.35);
-const Vector3 kAway(1.0, -0.3, 0.2);
 
 /// Takes the object once it has rested in the hand for 0.5 s, pulls while
 /// both hold it, and walks away with it once the robot lets go.

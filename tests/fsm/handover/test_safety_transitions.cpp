@@ -6,7 +6,6 @@
 namespace handover::fsm::test {
 namespace {
 
-const Vector3 kMeet(0.55, 0.0, 0.30);
 
 TEST(HandoverSafety, CloseArmSlowsDownWithoutChangingState) {
   Rig rig;
