@@ -115,7 +115,7 @@ std::vector<BatchEntry> runBatch(const BatchOptions& opt, std::ostream& out) {
         job.entry.summary.outcome = "error";
         job.entry.summary.error_message = e.what();
       }
-      job.entry.expectation_met = job.entry.summary.expectation_failures.empty();
+      job.entry.expectation_met = job.entry.summary.metExpectations();
       if (job.entry.expectation_met) ++as_expected;
       ++finished;
       std::lock_guard<std::mutex> lock(print_mutex);

@@ -45,6 +45,9 @@ struct RunSummary {
   std::vector<std::string> expectation_failures;  ///< unmet `expect:` lines (exit 1)
 
   bool success() const { return outcome == "success"; }
+  /// The run ended as its scenario expects: no `expect:` line failed, and it
+  /// did not end in an error (a run that never ran meets nothing).
+  bool metExpectations() const { return outcome != "error" && expectation_failures.empty(); }
   std::string toJson() const;
 };
 

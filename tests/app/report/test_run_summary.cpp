@@ -33,5 +33,16 @@ TEST(RunSummary, NonFiniteNumbersBecomeNull) {
   EXPECT_NE(r.toJson().find("\"min_human_distance\": null"), std::string::npos);
 }
 
+TEST(RunSummary, AnErrorNeverMeetsItsExpectations) {
+  RunSummary r;
+  r.outcome = "success";
+  EXPECT_TRUE(r.metExpectations());
+  r.expectation_failures.push_back("outcome: expected success, got timeout");
+  EXPECT_FALSE(r.metExpectations());
+  r.expectation_failures.clear();
+  r.outcome = "error";  // e.g. the config did not load: nothing was judged
+  r.error_message = "config/fsm.yaml:24: unknown key";
+  EXPECT_FALSE(r.metExpectations());
+}
 }  // namespace
 }  // namespace handover::app
