@@ -133,9 +133,9 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   cw.gripper_closed = adapter_.gripperWidth() < 0.5 * settings_.gripper_open_width;
   // the robot alone carries the object: the state machine set its payload, no
   // phase shares it with the person, and no hand of theirs is at the gripper
-  // (the TCP of the last step: one cycle old)
+  // (the TCP of the last step, as the state machine read it)
   const bool hand_at_gripper =
-      env.person_valid && (env.hand.translation() - controller_.tcpPose().translation()).norm() <
+      env.person_valid && (env.hand.translation() - input_.tcp_pose.translation()).norm() <
                               settings_.controller.contact_wrench.shared_distance;
   cw.carried_alone = adapter_.payloadSet() && !adapter_.handClearanceRelaxed() && !hand_at_gripper;
   control::Payload object;

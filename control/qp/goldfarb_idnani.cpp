@@ -667,8 +667,8 @@ QpStatus GoldfarbIdnaniSolver::solve(const QpProblem& problem, Eigen::VectorXd& 
     if (lb >= kQpInfinity || ub <= -kQpInfinity)
       return finish(QpStatus::kInfeasible, "a row has c_lb = +inf or c_ub = -inf", x);
     unsigned char t = kFree;
-    if (lb > -kQpInfinity) t |= kHasLower;
-    if (ub < kQpInfinity) t |= kHasUpper;
+    if (hasLowerSide(lb)) t |= kHasLower;
+    if (hasUpperSide(ub)) t |= kHasUpper;
     if (t == (kHasLower | kHasUpper)) {
       const double width_tol = tol * (nrm + std::max(std::abs(lb), std::abs(ub)));
       if (ub - lb < -width_tol)
@@ -684,8 +684,8 @@ QpStatus GoldfarbIdnaniSolver::solve(const QpProblem& problem, Eigen::VectorXd& 
     if (lb >= kQpInfinity || ub <= -kQpInfinity)
       return finish(QpStatus::kInfeasible, "a variable has x_lb = +inf or x_ub = -inf", x);
     unsigned char t = kFree;
-    if (lb > -kQpInfinity) t |= kHasLower;
-    if (ub < kQpInfinity) t |= kHasUpper;
+    if (hasLowerSide(lb)) t |= kHasLower;
+    if (hasUpperSide(ub)) t |= kHasUpper;
     if (t == (kHasLower | kHasUpper)) {
       const double width_tol = tol * (1.0 + std::max(std::abs(lb), std::abs(ub)));
       if (ub - lb < -width_tol)

@@ -20,6 +20,9 @@ namespace handover::control {
 
 /// Sides at or beyond this magnitude (lower <= -it, upper >= it) are absent.
 constexpr double kQpInfinity = 1e20;
+/// Whether a row's (or variable's) lower / upper side is present.
+inline bool hasLowerSide(double lb) { return lb > -kQpInfinity; }
+inline bool hasUpperSide(double ub) { return ub < kQpInfinity; }
 
 struct QpProblem {
   int n = 0;       ///< variables

@@ -1,16 +1,8 @@
 #include "control/qp/soft_row_relaxation.hpp"
 
-#include <cmath>
 #include <limits>
 
 namespace handover::control {
-
-namespace {
-
-bool hasLower(double lb) { return std::isfinite(lb) && lb > -kQpInfinity; }
-bool hasUpper(double ub) { return std::isfinite(ub) && ub < kQpInfinity; }
-
-}  // namespace
 
 void SoftRowRelaxation::reserve(int num_vars, int capacity_eq, int capacity_in) {
   phase1_.reserve(solverVars(num_vars), capacity_eq, solverRowsIn(capacity_in));
@@ -54,8 +46,8 @@ QpStatus SoftRowRelaxation::solve(const QpProblem& problem, QpSolver& solver, Ei
       addRow(i, 0.0, lb, ub);
       continue;
     }
-    if (hasLower(lb)) addRow(i, 1.0, lb, kInf);    // C x + s >= lb
-    if (hasUpper(ub)) addRow(i, -1.0, -kInf, ub);  // C x - s <= ub
+    if (hasLowerSide(lb)) addRow(i, 1.0, lb, kInf);    // C x + s >= lb
+    if (hasUpperSide(ub)) addRow(i, -1.0, -kInf, ub);  // C x - s <= ub
   }
   p1.n_in = rows;
   p1.x_lb.head(n) = problem.x_lb;
@@ -88,8 +80,8 @@ QpStatus SoftRowRelaxation::solve(const QpProblem& problem, QpSolver& solver, Ei
     double lb = problem.c_lb[i];
     double ub = problem.c_ub[i];
     if (problem.soft_in[i] != 0) {
-      if (hasLower(lb)) lb -= widen;
-      if (hasUpper(ub)) ub += widen;
+      if (hasLowerSide(lb)) lb -= widen;
+      if (hasUpperSide(ub)) ub += widen;
     }
     p2.c_lb[i] = lb;
     p2.c_ub[i] = ub;

@@ -1,7 +1,5 @@
 #include "fsm/handover/back_out.hpp"
 
-#include "fsm/handover/perception_checks.hpp"
-
 namespace handover::fsm {
 
 BackOut::BackOut() : clear_(declareOutput("Clear")) {}
@@ -13,17 +11,18 @@ void BackOut::configure(const YamlReader& def) {
 
 void BackOut::onStart(HandoverContext& ctx) {
   start_ = ctx.in.tcp_pose;
-  goal_ = start_;
-  goal_.translation() -= distance_ * start_.linear().col(2);
+  Isometry goal = start_;
+  goal.translation() -= distance_ * start_.linear().col(2);
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(ObservationTarget::kNone);
-  ctrl().setPoseTarget(goal_);
+  ctrl().setPoseTarget(goal);
 }
 
 bool BackOut::onRun(HandoverContext& ctx) {
-  const Vector3 axis = start_.linear().col(2);
-  const double backed = -(ctx.in.tcp_pose.translation() - start_.translation()).dot(axis);
-  if (positionError(ctx.in.tcp_pose, goal_) <= pos_tol_ || backed >= distance_ - pos_tol_) {
+  // progress along the approach axis only: a sideways push by the person
+  // must not hold the fingers in place
+  const double backed = -(ctx.in.tcp_pose.translation() - start_.translation()).dot(start_.linear().col(2));
+  if (backed >= distance_ - pos_tol_) {
     setOutput(clear_);
     return true;
   }

@@ -12,8 +12,8 @@ namespace handover::fsm {
 
 /// [Clear] Tracking off, observation none; pose task to the TCP pose
 /// `distance` behind the current one along its z axis. Clear once the TCP
-/// is within position_tolerance of it (or has moved `distance` back along
-/// the axis). Keys: distance (m), position_tolerance (m); `timeout` (s)
+/// has moved back along that axis to within position_tolerance of
+/// `distance`. Keys: distance (m), position_tolerance (m); `timeout` (s)
 /// gives output Timeout (the transition table decides; usually the same as Clear).
 class BackOut : public HandoverState {
  public:
@@ -25,8 +25,7 @@ class BackOut : public HandoverState {
  private:
   int clear_;
   double distance_ = 0.08, pos_tol_ = 0.01;
-  Isometry start_ = Isometry::Identity();
-  Isometry goal_ = Isometry::Identity();
+  Isometry start_ = Isometry::Identity();  ///< the TCP when the fingers let go
 };
 
 }  // namespace handover::fsm
