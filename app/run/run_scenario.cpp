@@ -14,6 +14,7 @@
 #include "app/report/output_files.hpp"
 #include "app/run/run_log.hpp"
 #include "app/run/world_setup.hpp"
+#include "scenes/scenario/object_geometry.hpp"
 #include "app/validate/scenario_validation.hpp"
 #include "config/input_error.hpp"
 #include "control/collision/collision_distances.hpp"
@@ -58,6 +59,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   cs.object.mass = sc.object.mass;
   cs.object.grasp_in_object = sc.object.grasp;
   cs.object.com_in_tcp = sc.object.grasp.inverse().translation();
+  cs.object.shape = scenario::primitiveShapeOf(sc.object);
   cs.object_grasp = graspOffsetFor(sc.object);
   cs.object_grasps = graspSpecsFor(sc.object, cs.grasp_selection.declared_preference, cs.gripper_open_width);
   cs.collision.object = collisionShapeFor(sc.object);
@@ -107,7 +109,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   // -- initial state --------------------------------------------------------
   const control::Vector7 q0 = sc.robot.start_q.value_or(cs.controller.posture.target);
   const Eigen::Isometry3d tcp_T_object = sc.object.grasp.inverse();
-  const double hold_width = std::clamp(objectWidthAcrossFingers(sc.object), 0.0, cs.gripper_open_width);
+  const double hold_width = std::clamp(scenario::objectWidthAcrossFingers(sc.object), 0.0, cs.gripper_open_width);
   if (sc.robot.holds_object) sim.reset(q0, hold_width, tcp_T_object);
   else sim.reset(q0, cs.gripper_open_width);
   {

@@ -24,7 +24,6 @@ sim::SimOptions simOptionsFor(const scenario::Scenario& sc) {
   return o;
 }
 
-double objectWidthAcrossFingers(const scenario::ObjectSpec& obj) { return scenario::objectWidthAcrossFingers(obj); }
 
 control::GraspOffset graspOffsetFor(const scenario::ObjectSpec& obj) {
   control::GraspOffset g;

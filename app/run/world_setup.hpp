@@ -20,8 +20,6 @@ std::string sourcePath(const std::string& relative);
 /// Simulator options for the scenario's object and person.
 sim::SimOptions simOptionsFor(const scenario::Scenario& sc);
 
-/// Opening (m) the fingers need around the object along the grasp frame's y axis.
-double objectWidthAcrossFingers(const scenario::ObjectSpec& object);
 
 /// The grasp frame in the object frame, with the object's symmetry axis.
 control::GraspOffset graspOffsetFor(const scenario::ObjectSpec& object);

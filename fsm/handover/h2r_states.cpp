@@ -2,10 +2,16 @@
 
 #include <cmath>
 
+#include "fsm/handover/grasp_funnel.hpp"
 #include "fsm/handover/perception_checks.hpp"
 #include "fsm/handover/tracking_setup.hpp"
 
 namespace handover::fsm {
+
+namespace {
+// m: smaller changes of the funnel's standoff are not worth a new command
+constexpr double kStandoffStep = 1e-6;
+}  // namespace
 
 WaitForPerson::WaitForPerson(bool hand)
     : hand_(hand), out_(declareOutput(hand ? "ReceiverComing" : "Offered")) {}
@@ -84,12 +90,23 @@ void Grasp::configure(const YamlReader& def) {
   confirm_time_ = readRange(def, "confirm_time", 0.0, 5.0);
   stall_speed_ = readPositive(def, "stall_speed", 1.0);
   min_width_ = readRange(def, "min_width", 0.0, 0.08);
+  if (def.has("standoff")) {
+    max_standoff_ = readRange(def, "standoff", 0.0, 0.3);
+    standoff_speed_ = readPositive(def, "standoff_speed", 1.0);
+    funnel_margin_ = readRange(def, "funnel_margin", 0.0, 1.0);
+  }
 }
 
 void Grasp::onStart(HandoverContext& ctx) {
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   closing_ = false;
-  trackTarget(ctx, ctrl(), false);
+  funnel_time_ = ctx.time;
+  trackTarget(ctx, ctrl(), false, std::min(ctx.tracking_standoff, funnelStandoff(fitNow(ctx), max_standoff_, funnel_margin_)));
+}
+
+FingerFit Grasp::fitNow(const HandoverContext& ctx) const {
+  return fingerFit(ctx.in.tcp_pose, ctx.in.observed_pose, trackedGraspFrame(ctx), ctx.object.shape,
+                   ctx.params->gripper_open_width, ctx.params->finger_half_span);
 }
 
 bool Grasp::onRun(HandoverContext& ctx) {
@@ -98,7 +115,17 @@ bool Grasp::onRun(HandoverContext& ctx) {
       setOutput(withdrawn_);
       return true;
     }
-    if (!alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_)) return false;
+    const FingerFit f = fitNow(ctx);
+    // the funnel's standoff, reached at standoff_speed (the fit is as noisy as the object's pose)
+    const double step = standoff_speed_ * std::max(0.0, ctx.time - funnel_time_);
+    funnel_time_ = ctx.time;
+    const double now = ctx.tracking_standoff;
+    const double standoff = now + std::clamp(funnelStandoff(f, max_standoff_, funnel_margin_) - now, -step, step);
+    if (std::abs(standoff - now) > kStandoffStep) trackTarget(ctx, ctrl(), false, standoff);
+    // closes only on an object between the fingers (the funnel's last part)
+    if (f.fit <= 0.0 || positionError(ctx.in.tcp_pose, trackedGraspFrame(ctx)) > pos_tol_ ||
+        !alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_))
+      return false;
     ctx.force_before_grasp = ctx.force;  // reference for the release test
     ctrl().setGripper(ctx.params->gripper_close_width, ctx.params->gripForce(ctx.object.mass, ctx.comInTcp()));
     closing_ = true;

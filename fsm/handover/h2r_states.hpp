@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "fsm/handover/grasp_funnel.hpp"
 #include "fsm/handover/handover_state.hpp"
 
 namespace handover::fsm {
@@ -51,8 +52,14 @@ class Approach : public HandoverState {
 /// confirm_time and the fingers have stopped (slower than stall_speed), the
 /// grasp is confirmed by a finger width above min_width (not closed on
 /// nothing), else missed.
+/// Slides in through the grasp funnel (grasp_funnel.hpp): backed off by up
+/// to `standoff` along the approach axis while the object does not fit
+/// between the open fingers, all the way in once it does; it closes only
+/// with the object between the fingers.
 /// Keys: position_tolerance (m), orientation_tolerance_deg, speed_tolerance
-/// (m/s), confirm_time (s), stall_speed (m/s), min_width (m).
+/// (m/s), confirm_time (s), stall_speed (m/s), min_width (m), standoff (m,
+/// optional, default 0: no funnel) with standoff_speed (m/s) and
+/// funnel_margin (share of the clearance, 0..1).
 class Grasp : public HandoverState {
  public:
   Grasp();
@@ -61,9 +68,15 @@ class Grasp : public HandoverState {
   bool onRun(HandoverContext& ctx) override;
 
  private:
+  FingerFit fitNow(const HandoverContext& ctx) const;
+
   int grasped_, missed_, withdrawn_;
   double pos_tol_ = 0.01, rot_tol_ = 0.17, speed_tol_ = 0.05, confirm_time_ = 0.3, min_width_ = 0.005;
   double stall_speed_ = 0.01;
+  double max_standoff_ = 0.0;    ///< m, the funnel's mouth
+  double standoff_speed_ = 0.1;  ///< m/s, fastest change of the standoff
+  double funnel_margin_ = 0.5;   ///< share of the clearance the last slide keeps to spare
+  double funnel_time_ = 0.0;     ///< s, when the standoff last changed
   bool closing_ = false;
   double closed_at_ = 0.0;
   double last_width_ = 0.0, last_time_ = 0.0, finger_speed_ = 0.0;

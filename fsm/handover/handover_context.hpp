@@ -48,6 +48,9 @@ struct HandoverContext : Context {
   /// The give's TCP in the receiver's hand frame; starts as the declared
   /// presentation (params.object_in_hand with the declared grasp).
   TrackedChoice presentation;
+  /// m: how far the tracked target is backed off along its approach axis, as
+  /// trackTarget (tracking_setup.hpp) last commanded it.
+  double tracking_standoff = 0.0;
 
   /// The object's pose in the TCP frame, held with `grasp`.
   Isometry objectInTcp() const { return grasp.offset.inverse(); }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "fsm/handover/grasp_plan.hpp"
+#include "interfaces/object_shape.hpp"
 
 namespace handover::fsm {
 
@@ -70,6 +71,9 @@ struct ObjectInfo {
   double mass = 0.3;                          ///< kg
   Vector3 com_in_tcp = Vector3::Zero();       ///< centre of mass in the TCP frame when grasped, m
   Isometry grasp_in_object = Isometry::Identity();  ///< grasp frame in the object frame
+  /// Its primitive shape (object frame): the grasp funnel reads how it fits
+  /// between the fingers. Unknown: the gripper slides straight in.
+  io::ObjectShape shape;
 };
 
 /// Counters and the outcome, readable by the application every cycle.

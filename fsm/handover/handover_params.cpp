@@ -66,6 +66,11 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
     // inside the PD bound (control/controller_config_bounds.hpp; a test holds it)
     p.tracking_translation_stiffness = inRange(*t, "translation_stiffness", 0.0, 1000.0);
     p.tracking_orientation_stiffness = inRange(*t, "orientation_stiffness", 0.0, 1000.0);
+    if (auto take = t->optionalChild("take")) {
+      p.take_tracking_translation_stiffness = inRange(*take, "translation_stiffness", 0.0, 1000.0);
+      p.take_tracking_orientation_stiffness = inRange(*take, "orientation_stiffness", 0.0, 1000.0);
+      take->finish();
+    }
     t->finish();
   }
   const YamlReader g = n.child("gripper");
@@ -73,6 +78,7 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
   p.gripper_close_width = inRange(g, "close_width", 0.0, 0.08);
   if (p.gripper_close_width >= p.gripper_open_width) g.child("close_width").fail("must be below open_width");
   p.gripper_force = positive(g, "force", 140.0);
+  if (g.has("finger_half_span")) p.finger_half_span = inRange(g, "finger_half_span", 0.0, 0.05);
   {
     const YamlReader grip = g.child("grip");
     p.grip_friction = positive(grip, "friction", 2.0);

@@ -26,10 +26,20 @@ struct HandoverParams {
   /// configured gains (the paper's K = 1 / 2 in config/controller.yaml).
   double tracking_translation_stiffness = 0.0;
   double tracking_orientation_stiffness = 0.0;
+  /// The same while the gripper lines up on an object the person holds out
+  /// (take: Approach, Grasp); 0 = the gains above. Stiffer: the fingers must
+  /// line up within the object's clearance (6-9 mm), and a PD's steady error
+  /// under the model's small errors shrinks as 1/K.
+  double take_tracking_translation_stiffness = 0.0;
+  double take_tracking_orientation_stiffness = 0.0;
   // gripper
   double gripper_open_width = 0.08;  ///< m, commanded opening
   double gripper_close_width = 0.0;  ///< m, commanded when grasping (the object stops the fingers)
   double gripper_force = 40.0;       ///< N, force limit while opening (and before a grasp)
+  /// m: half the size of a finger's contact face, across and along the
+  /// fingers: the lever by which a turn of the gripper against the object
+  /// widens the object's footprint between the fingers (grasp_funnel.hpp)
+  double finger_half_span = 0.012;
   /// The grip on the object (gripper.grip): each finger presses with F, and
   /// friction holds 2 mu F against the object's weight and the retract's
   /// accelerations, F >= margin m (g + acceleration) / (2 mu); and each pad's

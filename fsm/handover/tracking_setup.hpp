@@ -26,13 +26,23 @@ inline void trackTarget(HandoverContext& ctx, ControllerHandle& ctrl, bool hand,
   ctrl.setObservationTarget(hand ? ObservationTarget::kHand : ObservationTarget::kObject);
   const TrackedChoice& c = trackedChoice(ctx, hand);
   ctrl.setTrackingOffset(TrackingOffset{c.offset * Eigen::Translation3d(0.0, 0.0, -standoff), c.planned});
+  ctx.tracking_standoff = standoff;
   if (c.planned) ctrl.setPostureTarget(standoff > 0.0 ? c.q_pre : c.q_target);
   ctrl.clearPoseTarget();
   const HandoverParams& p = *ctx.params;
-  if (p.tracking_translation_stiffness > 0.0 && p.tracking_orientation_stiffness > 0.0) {
+  if (!hand && p.take_tracking_translation_stiffness > 0.0 && p.take_tracking_orientation_stiffness > 0.0) {
+    ctrl.setTrackingStiffness(p.take_tracking_translation_stiffness, p.take_tracking_orientation_stiffness);
+  } else if (p.tracking_translation_stiffness > 0.0 && p.tracking_orientation_stiffness > 0.0) {
     ctrl.setTrackingStiffness(p.tracking_translation_stiffness, p.tracking_orientation_stiffness);
   }
   ctrl.enableTracking(true);
+}
+
+/// The tracked grasp (or presentation) frame itself, world: the target the
+/// controller tracked last cycle moved forward by the standoff it was backed
+/// off by (exact also when the controller resolves a free axis itself).
+inline Isometry trackedGraspFrame(const HandoverContext& ctx) {
+  return ctx.in.target_pose * Eigen::Translation3d(0.0, 0.0, ctx.tracking_standoff);
 }
 
 /// While a state may still change its mind (approaching): follows the

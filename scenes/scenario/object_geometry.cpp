@@ -5,21 +5,18 @@
 
 namespace handover::scenario {
 
-double objectExtent(const ObjectSpec& obj, const Eigen::Vector3d& u_in) {
-  const Eigen::Vector3d u = u_in.normalized();
+io::ObjectShape primitiveShapeOf(const ObjectSpec& obj) {
+  io::ObjectShape s;
+  for (std::size_t i = 0; i < obj.size.size() && i < 3; ++i) s.size[static_cast<int>(i)] = obj.size[i];
   switch (obj.shape) {
-    case Shape::Sphere: return 2.0 * obj.size[0];
-    case Shape::Cylinder: {
-      // the disc contributes its diameter scaled by the sine to the axis, the
-      // axis its height scaled by the cosine
-      const double c = std::min(1.0, std::abs(u.z()));
-      return 2.0 * obj.size[0] * std::sqrt(1.0 - c * c) + obj.size[1] * c;
-    }
-    case Shape::Box:
-      return std::abs(u.x()) * obj.size[0] + std::abs(u.y()) * obj.size[1] + std::abs(u.z()) * obj.size[2];
+    case Shape::Sphere: s.kind = io::ObjectShape::Kind::kSphere; break;
+    case Shape::Cylinder: s.kind = io::ObjectShape::Kind::kCylinder; break;
+    case Shape::Box: s.kind = io::ObjectShape::Kind::kBox; break;
   }
-  return 0.0;
+  return s;
 }
+
+double objectExtent(const ObjectSpec& obj, const Eigen::Vector3d& u) { return io::extentAlong(primitiveShapeOf(obj), u); }
 
 double objectWidthAcrossFingers(const ObjectSpec& obj) { return objectExtent(obj, obj.grasp.linear().col(1)); }
 

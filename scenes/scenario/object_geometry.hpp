@@ -6,12 +6,16 @@
 
 #include <Eigen/Core>
 
+#include "interfaces/object_shape.hpp"
 #include "scenes/scenario/scenario.hpp"
 
 namespace handover::scenario {
 
 /// Gripper opening (Panda, both fingers at 0.04 m), m.
 constexpr double kGripperOpening = 0.08;
+
+/// The object's primitive shape (io::ObjectShape) for the controller side.
+io::ObjectShape primitiveShapeOf(const ObjectSpec& obj);
 
 /// Extent (m) of the object along the unit direction `u` of its frame: the
 /// distance between its two supporting planes normal to u.

@@ -93,6 +93,20 @@ TEST(HandoverConfig, BadParameterValues) {
   EXPECT_NE(msg.find("params.gripper.close_width"), std::string::npos) << msg;
 }
 
+TEST(HandoverConfig, TakeGainsAndTheGraspFunnel) {
+  RecordingController ctl;
+  HandoverFsm fsm(YamlReader::loadFile(HandoverFsm::defaultConfigPath()), ctl, ObjectInfo{});
+  // the take lines up stiffer than the give follows (both read from the shipped file)
+  EXPECT_GT(fsm.params().take_tracking_translation_stiffness, fsm.params().tracking_translation_stiffness);
+  EXPECT_GT(fsm.params().finger_half_span, 0.0);
+  std::string msg = loadError(replaced(shipped(), "take:", "tkae:"));
+  EXPECT_NE(msg.find("unknown key 'tkae'"), std::string::npos) << msg;
+  msg = loadError(replaced(shipped(), "funnel_margin: 0.25", "funnel_margin: 1.5"));
+  EXPECT_NE(msg.find("funnel_margin"), std::string::npos) << msg;
+  msg = loadError(replaced(shipped(), "finger_half_span: 0.012", "finger_half_span: -0.01"));
+  EXPECT_NE(msg.find("params.gripper.finger_half_span"), std::string::npos) << msg;
+}
+
 TEST(HandoverConfig, MissingThresholdIsAnError) {
   const std::string msg = loadError(replaced(shipped(), "near_distance: 0.08, timeout: 10.0}\n            Present",
                                              "timeout: 10.0}\n            Present"));

@@ -1,0 +1,49 @@
+// The grasp funnel: how far back along its approach axis the gripper waits
+// while the object does not yet fit between its open fingers.
+//
+// The fingers may only slide over the object once the object's slab across
+// them lies inside the opening. A lateral error larger than the clearance
+// (opening minus the object's width, per side: 6-9 mm for ordinary objects)
+// lands a fingertip on the object: the gripper then pushes it instead of
+// enclosing it, and the grasp never completes. So the standoff shrinks from
+// its maximum (the fingertips in front of the object) to zero as the fit
+// grows from nothing to half the clearance: the last slide keeps half the
+// clearance as margin. A funnel along the approach axis, continuous in the
+// alignment, instead of a stop-then-slide threshold.
+//
+// The fit: the clearance at perfect alignment (from the object's shape),
+// less the lateral offset of the object's mid-plane from the fingers' and
+// the widening a turned gripper causes, which is the turn (about the axes
+// across the closing axis) times the finger's half span: a finger face
+// meets the object over its own span, not the object's whole length.
+//
+// Frames: world poses; the TCP's and the grasp frame's y axis is the closing
+// axis, z the approach axis (design notes). Units: m, rad. Real-time safe.
+#pragma once
+
+#include "fsm/handover/handover_io.hpp"
+
+namespace handover::fsm {
+
+/// How the object sits between the open fingers now.
+struct FingerFit {
+  /// m: room left between the object and the nearer finger (<= 0: a finger
+  /// overlaps the object). Large when the shape is unknown.
+  double fit = 1e9;
+  /// m: the room per side at perfect alignment with the grasp frame
+  /// (opening minus the object's width across the grasp's fingers, halved).
+  double clearance = 1e9;
+};
+
+/// tcp, object, grasp: world poses (grasp = the frame the TCP should reach on
+/// the object); opening: the open fingers' total gap, m; finger_half_span:
+/// m, half a finger's contact face.
+FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry& grasp, const io::ObjectShape& shape,
+                    double opening, double finger_half_span);
+
+/// Standoff (m) along the approach axis for this fit: max_standoff while the
+/// object does not fit, 0 once the fit keeps `margin` (a fraction of the
+/// clearance) to spare, linear between.
+double funnelStandoff(const FingerFit& f, double max_standoff, double margin);
+
+}  // namespace handover::fsm

@@ -1,0 +1,45 @@
+// The hand-held object's primitive shape, in the object's own frame: origin at
+// the shape's centre, a cylinder's axis along z, a box's edges along x, y, z
+// (as in the scenes and the scenario files). Neutral: the scenario checks, the
+// collision model's setup and the state machine's grasp funnel read it.
+// Units: m. Real-time safe (no allocation).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Core>
+
+namespace handover::io {
+
+struct ObjectShape {
+  enum class Kind { kUnknown, kBox, kCylinder, kSphere };
+  Kind kind = Kind::kUnknown;
+  /// box: full edges [x, y, z]; cylinder: [radius, height, -]; sphere: [radius, -, -]
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();
+
+  bool known() const { return kind != Kind::kUnknown; }
+};
+
+/// Extent (m) of the shape along the direction `u` of its frame (any length
+/// > 0): the distance between its two supporting planes normal to u. 0 when
+/// the shape is unknown.
+inline double extentAlong(const ObjectShape& s, const Eigen::Vector3d& u_in) {
+  const double n = u_in.norm();
+  if (!(n > 0.0)) return 0.0;
+  const Eigen::Vector3d u = u_in / n;
+  switch (s.kind) {
+    case ObjectShape::Kind::kSphere: return 2.0 * s.size.x();
+    case ObjectShape::Kind::kCylinder: {
+      // the disc contributes its diameter scaled by the sine to the axis, the
+      // axis its height scaled by the cosine
+      const double c = std::min(1.0, std::abs(u.z()));
+      return 2.0 * s.size.x() * std::sqrt(1.0 - c * c) + s.size.y() * c;
+    }
+    case ObjectShape::Kind::kBox: return u.cwiseAbs().dot(s.size);
+    case ObjectShape::Kind::kUnknown: break;
+  }
+  return 0.0;
+}
+
+}  // namespace handover::io

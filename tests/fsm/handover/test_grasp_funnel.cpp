@@ -1,0 +1,124 @@
+// The grasp funnel (fsm/handover/grasp_funnel.hpp): the fit of the object
+// between the open fingers and the standoff it allows, on hand-computed
+// geometry.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "fsm/handover/grasp_funnel.hpp"
+
+namespace handover::fsm {
+namespace {
+
+constexpr double kOpening = 0.08;
+constexpr double kSpan = 0.012;
+
+io::ObjectShape cylinder(double radius, double height) {
+  io::ObjectShape s;
+  s.kind = io::ObjectShape::Kind::kCylinder;
+  s.size = Vector3(radius, height, 0.0);
+  return s;
+}
+
+io::ObjectShape box(double x, double y, double z) {
+  io::ObjectShape s;
+  s.kind = io::ObjectShape::Kind::kBox;
+  s.size = Vector3(x, y, z);
+  return s;
+}
+
+/// A side grasp on an upright object at `object`: approach along world x,
+/// fingers closing along world y.
+Isometry sideGrasp(const Vector3& at) {
+  Isometry g = Isometry::Identity();
+  g.linear() << 0, 0, 1,  //
+      0, 1, 0,            //
+      -1, 0, 0;           // columns: x = -z_w, y = y_w, z = x_w
+  g.translation() = at;
+  return g;
+}
+
+Isometry at(const Vector3& p) {
+  Isometry T = Isometry::Identity();
+  T.translation() = p;
+  return T;
+}
+
+TEST(GraspFunnel, UnknownShapeSlidesStraightIn) {
+  const Isometry grasp = sideGrasp(Vector3(0.5, 0.0, 0.3));
+  const FingerFit f = fingerFit(grasp, at(grasp.translation()), grasp, io::ObjectShape{}, kOpening, kSpan);
+  EXPECT_GT(f.fit, 1.0);
+  EXPECT_EQ(funnelStandoff(f, 0.08, 0.5), 0.0);
+}
+
+TEST(GraspFunnel, AlignedObjectFitsWithItsWholeClearance) {
+  const Vector3 p(0.5, 0.0, 0.3);
+  const FingerFit f = fingerFit(sideGrasp(p), at(p), sideGrasp(p), cylinder(0.03, 0.2), kOpening, kSpan);
+  EXPECT_NEAR(f.clearance, 0.01, 1e-12);  // (0.08 - 0.06) / 2
+  EXPECT_NEAR(f.fit, 0.01, 1e-12);
+  EXPECT_EQ(funnelStandoff(f, 0.08, 0.5), 0.0);
+}
+
+TEST(GraspFunnel, LateralErrorBeyondTheClearanceHoldsTheGripperBack) {
+  const Vector3 p(0.5, 0.0, 0.3);
+  // the TCP 12 mm to the side along the closing axis: a finger lands on the object
+  const Isometry tcp = sideGrasp(p + Vector3(0.0, 0.012, 0.0));
+  const FingerFit f = fingerFit(tcp, at(p), sideGrasp(p), cylinder(0.03, 0.2), kOpening, kSpan);
+  EXPECT_NEAR(f.fit, -0.002, 1e-12);
+  EXPECT_EQ(funnelStandoff(f, 0.08, 0.5), 0.08);
+}
+
+TEST(GraspFunnel, StandoffShrinksLinearlyAsTheFitGrows) {
+  const Vector3 p(0.5, 0.0, 0.3);
+  // 7.5 mm to the side: fit 2.5 mm, half of the 5 mm margin (0.5 of 10 mm)
+  const Isometry tcp = sideGrasp(p + Vector3(0.0, -0.0075, 0.0));
+  const FingerFit f = fingerFit(tcp, at(p), sideGrasp(p), cylinder(0.03, 0.2), kOpening, kSpan);
+  EXPECT_NEAR(f.fit, 0.0025, 1e-12);
+  EXPECT_NEAR(funnelStandoff(f, 0.08, 0.5), 0.04, 1e-12);
+  // an offset along the approach axis or across the fingers does not matter
+  const Isometry tcp2 = sideGrasp(p + Vector3(-0.05, -0.0075, 0.004));
+  EXPECT_NEAR(fingerFit(tcp2, at(p), sideGrasp(p), cylinder(0.03, 0.2), kOpening, kSpan).fit, 0.0025, 1e-12);
+  // margin 0: in as soon as it fits at all
+  EXPECT_EQ(funnelStandoff(f, 0.08, 0.0), 0.0);
+}
+
+TEST(GraspFunnel, TurnAcrossTheClosingAxisWidensByTheFingerSpan) {
+  const Vector3 p(0.5, 0.0, 0.3);
+  const double turn = 0.1;  // rad
+  for (const Vector3& axis : {Vector3::UnitX(), Vector3::UnitZ()}) {  // TCP frame: across and along the fingers
+    Isometry tcp = sideGrasp(p);
+    tcp.linear() = tcp.linear() * Eigen::AngleAxisd(turn, axis).toRotationMatrix();
+    const FingerFit f = fingerFit(tcp, at(p), sideGrasp(p), cylinder(0.03, 0.2), kOpening, kSpan);
+    EXPECT_NEAR(f.fit, 0.01 - kSpan * turn, 1e-12) << axis.transpose();
+  }
+  // a turn about the closing axis keeps the object's slab where it was
+  Isometry tcp = sideGrasp(p);
+  tcp.linear() = tcp.linear() * Eigen::AngleAxisd(turn, Vector3::UnitY()).toRotationMatrix();
+  EXPECT_NEAR(fingerFit(tcp, at(p), sideGrasp(p), cylinder(0.03, 0.2), kOpening, kSpan).fit, 0.01, 1e-12);
+}
+
+TEST(GraspFunnel, ClearanceComesFromTheWidthAcrossTheGraspsFingers) {
+  const Vector3 p(0.5, 0.0, 0.3);
+  // a 9 x 6 cm box: fingers across its 6 cm side leave 1 cm, across the 9 cm side nothing fits
+  Isometry obj = at(p);
+  EXPECT_NEAR(fingerFit(sideGrasp(p), obj, sideGrasp(p), box(0.09, 0.06, 0.2), kOpening, kSpan).clearance, 0.01,
+              1e-12);
+  obj.linear() = Eigen::AngleAxisd(M_PI / 2.0, Vector3::UnitZ()).toRotationMatrix();
+  const FingerFit f = fingerFit(sideGrasp(p), obj, sideGrasp(p), box(0.09, 0.06, 0.2), kOpening, kSpan);
+  EXPECT_NEAR(f.clearance, 0.001, 1e-12);  // the floor: (0.08 - 0.09) / 2 < 0
+  EXPECT_NEAR(f.fit, 0.001, 1e-12);
+}
+
+TEST(GraspFunnel, GraspOffTheMidPlaneCountsTheObjectsOwnOffset) {
+  const Vector3 p(0.5, 0.0, 0.3);
+  // the grasp 5 mm off the cylinder's axis along the closing direction: the
+  // object sits 5 mm off the fingers' mid-plane with the TCP right on the grasp
+  const Isometry grasp = sideGrasp(p + Vector3(0.0, 0.005, 0.0));
+  const FingerFit f = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
+  EXPECT_NEAR(f.fit, 0.005, 1e-12);
+}
+
+}  // namespace
+}  // namespace handover::fsm
