@@ -153,6 +153,8 @@ class HandoverCycle {
   const fsm::HandoverFsm& machine() const { return *machine_; }
   const control::Controller& controller() const { return controller_; }
   const ControllerAdapter& adapter() const { return adapter_; }
+  /// The state machine's controller interface, to drive it directly (tests, tools).
+  ControllerAdapter& adapter() { return adapter_; }
   /// The grasp planner (null without object grasps).
   const GraspPlanning* planning() const { return planning_.get(); }
   const control::CollisionConstraint& collision() const { return *collision_; }

@@ -181,6 +181,15 @@ CollisionConfig parse(const YamlReader& root) {
     rule.margin = person ? cfg.person.margin : 0.0;
     if (auto c = r.optionalChild("margin")) rule.margin = c->checkRange(c->asDouble(), 0.0, 0.5);
     rule.enabled = r.getBool("enabled", true);
+    if (auto w = r.optionalChild("when")) {
+      const std::string when = w->asString();
+      if (when == "always") rule.scope = RuleScope::kAlways;
+      else if (when == "apart") rule.scope = RuleScope::kApart;
+      else if (when == "sharing") rule.scope = RuleScope::kSharing;
+      else w->fail("'" + when + "' is not one of: always | apart | sharing");
+      if (r.has("enabled") && rule.scope != RuleScope::kAlways) w->fail("give `when` or `enabled`, not both");
+      if (rule.scope == RuleScope::kSharing) rule.enabled = false;  // nothing is shared at start-up
+    }
     r.finish();
     cfg.pairs.push_back(std::move(rule));
   }

@@ -33,13 +33,21 @@ struct DamperSettings {
 /// One rule of the `pairs:` list: every robot capsule matched by `robot`
 /// against every body matched by `other`. All the capsule pairs it yields
 /// share its name (switched on and off together at run time).
+/// When a pair rule is on: always (unless switched at run time by name), only
+/// while the gripper and the person do not share the object (`apart`), or
+/// only while they do (`sharing`: the fingers close on, hold or present the
+/// object in the person's hand). The controller adapter switches the last
+/// two with the state machine's hand-clearance switch.
+enum class RuleScope { kAlways, kApart, kSharing };
+
 struct PairRule {
   std::string name;
   std::vector<std::string> robot;   ///< patterns / group names (already expanded)
   std::vector<std::string> other;   ///< patterns / group names (already expanded)
   DamperSettings damper;
   double margin = 0.0;              ///< m, extra clearance around the other body
-  bool enabled = true;              ///< state at start-up
+  bool enabled = true;              ///< state at start-up (a `sharing` rule starts off)
+  RuleScope scope = RuleScope::kAlways;  ///< `when:` always | apart | sharing
   int line = 0;                     ///< line in the file, for messages
 };
 

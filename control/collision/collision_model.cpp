@@ -108,6 +108,7 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
     const PairRule& rule = cfg.pairs[r];
     cm.rule_names.push_back(rule.name);
     cm.rule_enabled.push_back(rule.enabled);
+    cm.rule_scope.push_back(rule.scope);
 
     std::vector<int> robots, others;
     for (const auto& pat : rule.robot) {
@@ -150,8 +151,14 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
         auto it = seen.find(key);
         if (it != seen.end()) {
           if (it->second == static_cast<int>(r)) continue;  // e.g. "arm vs arm" lists both orders
-          ruleError(cfg, rule, "pair '" + ra.link + "/" + ra.name + " - " + ob.name + "' is already listed by rule '" +
-                                   cfg.pairs[it->second].name + "'");
+          const RuleScope earlier = cfg.pairs[it->second].scope;
+          const bool exclusive = (earlier == RuleScope::kApart && rule.scope == RuleScope::kSharing) ||
+                                 (earlier == RuleScope::kSharing && rule.scope == RuleScope::kApart);
+          // never on together (the pair's settings while apart and while sharing): both may list it
+          if (!exclusive) {
+            ruleError(cfg, rule, "pair '" + ra.link + "/" + ra.name + " - " + ob.name + "' is already listed by rule '" +
+                                     cfg.pairs[it->second].name + "'");
+          }
         }
         seen[key] = static_cast<int>(r);
         CollisionPair p;

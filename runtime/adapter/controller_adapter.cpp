@@ -69,8 +69,17 @@ void ControllerAdapter::relaxHandClearance(bool relaxed) {
 
 void ControllerAdapter::applyClearances() {
   if (collision_ == nullptr) return;
-  if (hand_rule_ >= 0) collision_->setRuleEnabled(hand_rule_, !hand_relaxed_);
-  if (object_rule_ >= 0) collision_->setRuleEnabled(object_rule_, !hand_relaxed_ && !payload_set_);
+  auto set = [this](int rule, bool on) {
+    if (collision_->ruleEnabled(rule) != on) collision_->setRuleEnabled(rule, on);  // a switch resets its dampers
+  };
+  if (hand_rule_ >= 0) set(hand_rule_, !hand_relaxed_);
+  if (object_rule_ >= 0) set(object_rule_, !hand_relaxed_ && !payload_set_);
+  const std::vector<control::RuleScope>& scope = collision_->collisionModel().rule_scope;
+  for (int i = 0; i < static_cast<int>(scope.size()); ++i) {
+    if (i == hand_rule_ || i == object_rule_) continue;
+    if (scope[i] == control::RuleScope::kApart) set(i, !hand_relaxed_);
+    if (scope[i] == control::RuleScope::kSharing) set(i, hand_relaxed_);
+  }
 }
 
 void ControllerAdapter::setGripper(double width, double force) {

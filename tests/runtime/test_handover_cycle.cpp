@@ -92,6 +92,29 @@ TEST(HandoverCycle, StateMachineSeesThisCyclesSensingAndLastCyclesController) {
   EXPECT_LT(cycle.fsmInput().arm_distance, 0.1);  // the person's forearm is in the collision model
 }
 
+TEST(HandoverCycle, SharingTheObjectSwitchesTheScopedRules) {
+  // config/collision.yaml: the gripper keeps the sensor margin from the
+  // person's forearm while apart, and only the safety distance while it
+  // shares the object with the person's hand
+  HandoverCycle cycle(defaultCycleSettings());
+  const auto& cm = cycle.collision().collisionModel();
+  const int apart = cm.ruleIndex("person_arm_gripper");
+  const int sharing = cm.ruleIndex("person_arm_gripper_sharing");
+  ASSERT_GE(apart, 0);
+  ASSERT_GE(sharing, 0);
+  EXPECT_TRUE(cycle.collision().ruleEnabled(apart));
+  EXPECT_FALSE(cycle.collision().ruleEnabled(sharing));
+  ControllerAdapter& adapter = cycle.adapter();
+  adapter.relaxHandClearance(true);
+  EXPECT_FALSE(cycle.collision().ruleEnabled(apart));
+  EXPECT_TRUE(cycle.collision().ruleEnabled(sharing));
+  EXPECT_FALSE(cycle.collision().ruleEnabled(cycle.handGripperRule()));
+  adapter.relaxHandClearance(false);
+  EXPECT_TRUE(cycle.collision().ruleEnabled(apart));
+  EXPECT_FALSE(cycle.collision().ruleEnabled(sharing));
+  EXPECT_TRUE(cycle.collision().ruleEnabled(cycle.handGripperRule()));
+}
+
 TEST(HandoverCycle, StartSetsTheGripperAndPayload) {
   HandoverCycle empty(defaultCycleSettings());
   const io::Vector7 q0 = empty.controller().config().posture.target;

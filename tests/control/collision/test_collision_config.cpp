@@ -62,6 +62,26 @@ pairs:
   EXPECT_GT(c.pairs[2].line, c.pairs[1].line);
 }
 
+TEST(CollisionConfig, WhenTiesARuleToSharingTheObject) {
+  const CollisionConfig c = parseCollisionConfig(R"(
+pairs:
+  - {name: a, robot: panda_hand, other: human_forearm}
+  - {name: b, robot: panda_hand, other: human_upper_arm, when: apart}
+  - {name: c, robot: panda_hand, other: human_upper_arm, when: sharing, margin: 0.0}
+)", "t.yaml");
+  ASSERT_EQ(c.pairs.size(), 3u);
+  EXPECT_EQ(c.pairs[0].scope, RuleScope::kAlways);
+  EXPECT_EQ(c.pairs[1].scope, RuleScope::kApart);
+  EXPECT_TRUE(c.pairs[1].enabled);
+  EXPECT_EQ(c.pairs[2].scope, RuleScope::kSharing);
+  EXPECT_FALSE(c.pairs[2].enabled);  // nothing is shared at start-up
+  std::string e = errorOf("pairs:\n  - {name: a, robot: panda_hand, other: table, when: sometimes}\n");
+  EXPECT_NE(e.find("'sometimes' is not one of: always | apart | sharing"), std::string::npos) << e;
+  EXPECT_NE(e.find("bad.yaml:2"), std::string::npos) << e;
+  e = errorOf("pairs:\n  - {name: a, robot: panda_hand, other: table, when: apart, enabled: false}\n");
+  EXPECT_NE(e.find("not both"), std::string::npos) << e;
+}
+
 TEST(CollisionConfig, BuiltInDefaultsMatchTheIssue) {
   const CollisionConfig c = parseCollisionConfig("pairs: [{name: t, robot: panda_hand, other: table}]", "t.yaml");
   EXPECT_DOUBLE_EQ(c.pairs[0].damper.i_dist, 0.05);
