@@ -101,7 +101,8 @@ void Grasp::onStart(HandoverContext& ctx) {
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   closing_ = false;
   funnel_time_ = ctx.time;
-  trackTarget(ctx, ctrl(), false, std::min(ctx.tracking_standoff, funnelStandoff(fitNow(ctx), max_standoff_, funnel_margin_)));
+  trackTarget(ctx, ctrl(), false, std::min(ctx.tracking_standoff, funnelStandoff(fitNow(ctx), max_standoff_, funnel_margin_)),
+              TrackingGains::kAlign);
 }
 
 FingerFit Grasp::fitNow(const HandoverContext& ctx) const {
@@ -121,7 +122,7 @@ bool Grasp::onRun(HandoverContext& ctx) {
     funnel_time_ = ctx.time;
     const double now = ctx.tracking_standoff;
     const double standoff = now + std::clamp(funnelStandoff(f, max_standoff_, funnel_margin_) - now, -step, step);
-    if (std::abs(standoff - now) > kStandoffStep) trackTarget(ctx, ctrl(), false, standoff);
+    if (std::abs(standoff - now) > kStandoffStep) trackTarget(ctx, ctrl(), false, standoff, TrackingGains::kAlign);
     // closes only on an object between the fingers (the funnel's last part)
     if (f.fit <= 0.0 || positionError(ctx.in.tcp_pose, trackedGraspFrame(ctx)) > pos_tol_ ||
         !alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_))

@@ -66,10 +66,10 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
     // inside the PD bound (control/controller_config_bounds.hpp; a test holds it)
     p.tracking_translation_stiffness = inRange(*t, "translation_stiffness", 0.0, 1000.0);
     p.tracking_orientation_stiffness = inRange(*t, "orientation_stiffness", 0.0, 1000.0);
-    if (auto take = t->optionalChild("take")) {
-      p.take_tracking_translation_stiffness = inRange(*take, "translation_stiffness", 0.0, 1000.0);
-      p.take_tracking_orientation_stiffness = inRange(*take, "orientation_stiffness", 0.0, 1000.0);
-      take->finish();
+    if (auto align = t->optionalChild("align")) {
+      p.align_tracking_translation_stiffness = inRange(*align, "translation_stiffness", 0.0, 1000.0);
+      p.align_tracking_orientation_stiffness = inRange(*align, "orientation_stiffness", 0.0, 1000.0);
+      align->finish();
     }
     t->finish();
   }

@@ -26,12 +26,14 @@ struct HandoverParams {
   /// configured gains (the paper's K = 1 / 2 in config/controller.yaml).
   double tracking_translation_stiffness = 0.0;
   double tracking_orientation_stiffness = 0.0;
-  /// The same while the gripper lines up on an object the person holds out
-  /// (take: Approach, Grasp); 0 = the gains above. Stiffer: the fingers must
-  /// line up within the object's clearance (6-9 mm), and a PD's steady error
-  /// under the model's small errors shrinks as 1/K.
-  double take_tracking_translation_stiffness = 0.0;
-  double take_tracking_orientation_stiffness = 0.0;
+  /// The same while the fingers line up on the object in the person's hand
+  /// (Grasp); 0 = the gains above. Stiffer: the fingers must line up within
+  /// the object's clearance (6-9 mm), and a PD's steady error under the
+  /// model's small errors shrinks as 1/K. Not while approaching: a stiff
+  /// approach meets an object the person still brings in hard enough to
+  /// strike it.
+  double align_tracking_translation_stiffness = 0.0;
+  double align_tracking_orientation_stiffness = 0.0;
   // gripper
   double gripper_open_width = 0.08;  ///< m, commanded opening
   double gripper_close_width = 0.0;  ///< m, commanded when grasping (the object stops the fingers)

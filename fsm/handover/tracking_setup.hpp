@@ -22,19 +22,29 @@ inline const TrackingPlan& latestPlan(const HandoverContext& ctx, bool hand) {
 /// becomes its IK configuration (pre-target while backed off), so the QP's
 /// local motion leads to a configuration known to reach it instead of into
 /// a joint limit (redundancy resolution).
-inline void trackTarget(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double standoff = 0.0) {
+/// Which phase gains track it (params.tracking): following the person, or
+/// lining the fingers up on the object in the person's hand (Grasp).
+enum class TrackingGains { kFollow, kAlign };
+
+/// Sets the tracking task's phase gains. RT safe.
+inline void setTrackingGains(const HandoverParams& p, ControllerHandle& ctrl, TrackingGains gains) {
+  if (gains == TrackingGains::kAlign && p.align_tracking_translation_stiffness > 0.0 &&
+      p.align_tracking_orientation_stiffness > 0.0) {
+    ctrl.setTrackingStiffness(p.align_tracking_translation_stiffness, p.align_tracking_orientation_stiffness);
+  } else if (p.tracking_translation_stiffness > 0.0 && p.tracking_orientation_stiffness > 0.0) {
+    ctrl.setTrackingStiffness(p.tracking_translation_stiffness, p.tracking_orientation_stiffness);
+  }
+}
+
+inline void trackTarget(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double standoff = 0.0,
+                        TrackingGains gains = TrackingGains::kFollow) {
   ctrl.setObservationTarget(hand ? ObservationTarget::kHand : ObservationTarget::kObject);
   const TrackedChoice& c = trackedChoice(ctx, hand);
   ctrl.setTrackingOffset(TrackingOffset{c.offset * Eigen::Translation3d(0.0, 0.0, -standoff), c.planned});
   ctx.tracking_standoff = standoff;
   if (c.planned) ctrl.setPostureTarget(standoff > 0.0 ? c.q_pre : c.q_target);
   ctrl.clearPoseTarget();
-  const HandoverParams& p = *ctx.params;
-  if (!hand && p.take_tracking_translation_stiffness > 0.0 && p.take_tracking_orientation_stiffness > 0.0) {
-    ctrl.setTrackingStiffness(p.take_tracking_translation_stiffness, p.take_tracking_orientation_stiffness);
-  } else if (p.tracking_translation_stiffness > 0.0 && p.tracking_orientation_stiffness > 0.0) {
-    ctrl.setTrackingStiffness(p.tracking_translation_stiffness, p.tracking_orientation_stiffness);
-  }
+  setTrackingGains(*ctx.params, ctrl, gains);
   ctrl.enableTracking(true);
 }
 

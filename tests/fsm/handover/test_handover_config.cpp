@@ -96,11 +96,11 @@ TEST(HandoverConfig, BadParameterValues) {
 TEST(HandoverConfig, TakeGainsAndTheGraspFunnel) {
   RecordingController ctl;
   HandoverFsm fsm(YamlReader::loadFile(HandoverFsm::defaultConfigPath()), ctl, ObjectInfo{});
-  // the take lines up stiffer than the give follows (both read from the shipped file)
-  EXPECT_GT(fsm.params().take_tracking_translation_stiffness, fsm.params().tracking_translation_stiffness);
+  // the fingers line up stiffer than the arm follows (both read from the shipped file)
+  EXPECT_GT(fsm.params().align_tracking_translation_stiffness, fsm.params().tracking_translation_stiffness);
   EXPECT_GT(fsm.params().finger_half_span, 0.0);
-  std::string msg = loadError(replaced(shipped(), "take:", "tkae:"));
-  EXPECT_NE(msg.find("unknown key 'tkae'"), std::string::npos) << msg;
+  std::string msg = loadError(replaced(shipped(), "align:", "aling:"));
+  EXPECT_NE(msg.find("unknown key 'aling'"), std::string::npos) << msg;
   msg = loadError(replaced(shipped(), "funnel_margin: 0.25", "funnel_margin: 1.5"));
   EXPECT_NE(msg.find("funnel_margin"), std::string::npos) << msg;
   msg = loadError(replaced(shipped(), "finger_half_span: 0.012", "finger_half_span: -0.01"));
