@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <tuple>
 
 #include "collision_test_util.hpp"
 #include "config/input_error.hpp"
@@ -31,7 +32,9 @@ TEST(CollisionModel, RepositoryConfigResolves) {
   const CollisionModel cm = buildCollisionModel(m, cfg);
   ASSERT_EQ(cm.rule_names.size(), cfg.pairs.size());
   std::vector<int> per_rule(cfg.pairs.size(), 0);
-  std::set<std::pair<int, int>> unique;
+  // a pair is listed once among the rules that can be on together: an
+  // `apart` and a `sharing` rule never are (collision_config.hpp RuleScope)
+  std::set<std::tuple<int, int, bool>> unique;
   for (const auto& p : cm.pairs) {
     ++per_rule[p.rule];
     const CollisionBody& a = cm.bodies[p.robot_body];
@@ -43,7 +46,9 @@ TEST(CollisionModel, RepositoryConfigResolves) {
     if (o.kind == CollisionBodyKind::kTable) {
       EXPECT_GE(a.body, 2);
     }
-    EXPECT_TRUE(unique.insert({std::min(p.robot_body, p.other_body), std::max(p.robot_body, p.other_body)}).second);
+    const bool sharing = cm.rule_scope[p.rule] == RuleScope::kSharing;
+    EXPECT_TRUE(
+        unique.insert({std::min(p.robot_body, p.other_body), std::max(p.robot_body, p.other_body), sharing}).second);
   }
   for (std::size_t r = 0; r < per_rule.size(); ++r) EXPECT_GT(per_rule[r], 0) << cm.rule_names[r];
   // the gripper-hand rule holds exactly the gripper capsules against the hand
