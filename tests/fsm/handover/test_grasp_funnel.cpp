@@ -40,11 +40,7 @@ Isometry sideGrasp(const Vector3& at) {
   return g;
 }
 
-Isometry at(const Vector3& p) {
-  Isometry T = Isometry::Identity();
-  T.translation() = p;
-  return T;
-}
+Isometry at(const Vector3& p) { return Isometry(Eigen::Translation3d(p)); }
 
 TEST(GraspFunnel, UnknownShapeSlidesStraightIn) {
   const Isometry grasp = sideGrasp(Vector3(0.5, 0.0, 0.3));
