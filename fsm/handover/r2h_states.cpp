@@ -142,8 +142,12 @@ void ConfirmGone::onStart(HandoverContext& ctx) {
 
 bool ConfirmGone::onRun(HandoverContext& ctx) {
   const double weight = ctx.object.mass * ctx.params->gravity;
+  // the wrist lost gone_fraction of the weight since the hold was recorded,
+  // or the robot carries at most the rest of it (load share): a receiver who
+  // took part of the weight before the hold was recorded leaves less to lose
   const double removed = -ctx.addedWeight(ctx.force_holding);
-  if (ctx.in.finger_width < min_width_ || removed < fraction_ * weight) {
+  const bool left = removed >= fraction_ * weight || ctx.in.load_share <= 1.0 - fraction_;
+  if (ctx.in.finger_width < min_width_ || !left) {
     since_ = -1.0;
     return false;
   }

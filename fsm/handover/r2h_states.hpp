@@ -75,7 +75,9 @@ class Release : public HandoverState {
 
 /// [Gone] Fingers open wider than min_width and at least gone_fraction of
 /// the object's weight left the sensor (relative to the force recorded by
-/// DetectPull) for hold_time; then clears the payload.
+/// DetectPull), or the robot's load share is at most 1 - gone_fraction (a
+/// receiver who already carried part of the weight when DetectPull recorded
+/// the force), for hold_time; then clears the payload.
 /// Keys: min_width (m), gone_fraction, hold_time (s).
 class ConfirmGone : public HandoverState {
  public:

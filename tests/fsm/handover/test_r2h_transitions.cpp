@@ -63,6 +63,27 @@ TEST(HandoverR2H, WaitingForThePullHoldsAtThePresentationPoseNotShortOfIt) {
   EXPECT_LT(rotationError(rig.ctl.pose, in.target_pose), 0.01);
 }
 
+TEST(HandoverR2H, ObjectTakenByAReceiverWhoHeldItEarlyIsConfirmedGone) {
+  // the receiver carries the object's weight before the robot starts waiting
+  // for the pull, so the force DetectPull records has no weight left to lose;
+  // the load share still says the robot carries nothing once it let go
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+  rig.world.moveHand(kReceive, 0.5);
+  auto detect_since = std::make_shared<double>(-1.0);
+  rig.person = [&rig, detect_since](World& w) {
+    const bool in_hand = (w.object - (w.hand + w.object_in_hand)).norm() < 0.01;
+    if (!w.person_holds && in_hand && w.robot_grip) w.person_holds = true;  // takes the weight, no pull yet
+    if (Rig::endsWith(rig.fsm->activePath(), "DetectPull") && *detect_since < 0) *detect_since = w.time;
+    if (*detect_since >= 0 && w.time - *detect_since > 0.3 && w.robot_grip) w.pull = Vector3(5.0, 0.0, 0.0);
+    if (!w.robot_grip && w.person_holds) w.moveHand(kAway, 0.3);
+  };
+  ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 25.0)) << rig.fsm->activePath();
+  EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "HoldReady", "WaitForReceiver", "Approach", "Present",
+                                  "DetectPull", "Release", "ConfirmGone", "BackOut", "Retract", "Done"}));
+  EXPECT_STREQ(rig.fsm->stats().outcome, "success");
+}
+
 TEST(HandoverR2H, SuccessfulGiveVisitsEveryPhase) {
   Rig rig(true);
   ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
