@@ -45,7 +45,7 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
       contact_(controller_.model(), settings.controller.contact_wrench, settings.controller.period) {
   controller_.formulation().addConstraint(collision_);
   hand_rule_ = collision_->collisionModel().ruleIndex("person_hand_gripper");
-  adapter_.setCollision(collision_.get(), hand_rule_, collision_->collisionModel().ruleIndex("object_gripper"));
+  adapter_.setCollision(collision_.get(), collision_->collisionModel().ruleIndex("object_gripper"));
   ft_frame_ = controller_.model().frameId("ft_sensor");
   machine_ = fsm::HandoverFsm::fromFile(settings.fsm_config_path, adapter_, settings.object);
   if (!settings.object_grasps.empty()) {

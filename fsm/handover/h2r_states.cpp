@@ -8,11 +8,6 @@
 
 namespace handover::fsm {
 
-namespace {
-// m: smaller changes of the funnel's standoff are not worth a new command
-constexpr double kStandoffStep = 1e-6;
-}  // namespace
-
 WaitForPerson::WaitForPerson(bool hand)
     : hand_(hand), out_(declareOutput(hand ? "ReceiverComing" : "Offered")) {}
 
@@ -122,7 +117,7 @@ bool Grasp::onRun(HandoverContext& ctx) {
     funnel_time_ = ctx.time;
     const double now = ctx.tracking_standoff;
     const double standoff = now + std::clamp(funnelStandoff(f, max_standoff_, funnel_margin_) - now, -step, step);
-    if (std::abs(standoff - now) > kStandoffStep) trackTarget(ctx, ctrl(), false, standoff, TrackingGains::kAlign);
+    if (standoff != now) setStandoff(ctx, ctrl(), false, standoff);
     // closes only on an object between the fingers (the funnel's last part)
     if (f.fit <= 0.0 || positionError(ctx.in.tcp_pose, trackedGraspFrame(ctx)) > pos_tol_ ||
         !alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_))

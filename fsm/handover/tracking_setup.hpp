@@ -36,13 +36,19 @@ inline void setTrackingGains(const HandoverParams& p, ControllerHandle& ctrl, Tr
   }
 }
 
-inline void trackTarget(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double standoff = 0.0,
-                        TrackingGains gains = TrackingGains::kFollow) {
-  ctrl.setObservationTarget(hand ? ObservationTarget::kHand : ObservationTarget::kObject);
+/// Backs the tracked target off by `standoff` (m) along its approach axis,
+/// the posture reference with it. RT safe.
+inline void setStandoff(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double standoff) {
   const TrackedChoice& c = trackedChoice(ctx, hand);
   ctrl.setTrackingOffset(TrackingOffset{c.offset * Eigen::Translation3d(0.0, 0.0, -standoff), c.planned});
   ctx.tracking_standoff = standoff;
   if (c.planned) ctrl.setPostureTarget(standoff > 0.0 ? c.q_pre : c.q_target);
+}
+
+inline void trackTarget(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double standoff = 0.0,
+                        TrackingGains gains = TrackingGains::kFollow) {
+  ctrl.setObservationTarget(hand ? ObservationTarget::kHand : ObservationTarget::kObject);
+  setStandoff(ctx, ctrl, hand, standoff);
   ctrl.clearPoseTarget();
   setTrackingGains(*ctx.params, ctrl, gains);
   ctrl.enableTracking(true);

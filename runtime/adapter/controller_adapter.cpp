@@ -72,11 +72,10 @@ void ControllerAdapter::applyClearances() {
   auto set = [this](int rule, bool on) {
     if (collision_->ruleEnabled(rule) != on) collision_->setRuleEnabled(rule, on);  // a switch resets its dampers
   };
-  if (hand_rule_ >= 0) set(hand_rule_, !hand_relaxed_);
   if (object_rule_ >= 0) set(object_rule_, !hand_relaxed_ && !payload_set_);
   const std::vector<control::RuleScope>& scope = collision_->collisionModel().rule_scope;
   for (int i = 0; i < static_cast<int>(scope.size()); ++i) {
-    if (i == hand_rule_ || i == object_rule_) continue;
+    if (i == object_rule_) continue;
     if (scope[i] == control::RuleScope::kApart) set(i, !hand_relaxed_);
     if (scope[i] == control::RuleScope::kSharing) set(i, hand_relaxed_);
   }

@@ -35,13 +35,13 @@ class ControllerAdapter : public fsm::ControllerInterface {
   void setTrackingStiffness(double translation, double orientation) override;
   void clearTrackingStiffness() override;
   void relaxHandClearance(bool relaxed) override;
-  /// The collision constraint whose `hand_rule` (a pair-rule index) the
-  /// state machine relaxes; none: relaxHandClearance does nothing.
+  /// The collision constraint whose scoped rules (`when: apart | sharing`,
+  /// control/collision/collision_config.hpp) follow the state machine's
+  /// hand-clearance switch; none: relaxHandClearance does nothing.
   /// `object_rule` (gripper and the object the person holds) is on while
-  /// the gripper approaches: off with the hand rule and while a payload is set.
-  void setCollision(control::CollisionConstraint* collision, int hand_rule, int object_rule = -1) {
+  /// the gripper approaches: off while sharing and while a payload is set.
+  void setCollision(control::CollisionConstraint* collision, int object_rule = -1) {
     collision_ = collision;
-    hand_rule_ = hand_rule;
     object_rule_ = object_rule;
     applyClearances();
   }
@@ -78,7 +78,6 @@ class ControllerAdapter : public fsm::ControllerInterface {
   double gripper_force_ = 40.0;
   double speed_scale_ = 1.0;
   control::CollisionConstraint* collision_ = nullptr;
-  int hand_rule_ = -1;
   int object_rule_ = -1;
   bool hand_relaxed_ = false;
 };
