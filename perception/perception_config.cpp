@@ -6,7 +6,8 @@ PerceptionConfig parsePerceptionConfig(const YamlReader& root) {
   PerceptionConfig c;
   if (root.isNull()) return c;
   if (!root.isMap()) root.fail("expected a map of perception settings");
-  if (auto v = root.optionalChild("max_age")) c.max_age = v->checkRange(v->asDouble(), 1e-3, 10.0);
+  if (auto v = root.optionalChild("max_gap")) c.max_gap = v->checkRange(v->asDouble(), 1e-3, 10.0);
+  if (auto v = root.optionalChild("max_latency")) c.max_latency = v->checkRange(v->asDouble(), 0.0, 10.0);
   if (auto v = root.optionalChild("smoothing_time")) c.smoothing_time = v->checkRange(v->asDouble(), 0.0, 1.0);
   if (auto v = root.optionalChild("rotation_smoothing_time"))
     c.rotation_smoothing_time = v->checkRange(v->asDouble(), 0.0, 1.0);

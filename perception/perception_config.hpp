@@ -9,7 +9,8 @@
 namespace handover::perception {
 
 struct PerceptionConfig {
-  double max_age = 0.1;          ///< s, older samples are stale
+  double max_gap = 0.1;          ///< s without a new sample: the stream stopped (stale)
+  double max_latency = 0.2;      ///< s, a sample older than this on arrival is too late to act on
   double smoothing_time = 0.03;  ///< s, estimator smoothing time constant for positions (0 = none)
   double rotation_smoothing_time = 0.1;  ///< s, the same for rotations (0 = none)
   double blend_time = 0.5;       ///< s, observation-target switch blend

@@ -12,7 +12,7 @@ void PerceptionEstimator::reset() {
   rejected_ = 0;
 }
 
-bool PerceptionEstimator::addSample(const PoseSample& s) {
+bool PerceptionEstimator::addSample(const PoseSample& s, double arrival) {
   if (!s.allFinite() || (have_ && s.stamp < latest_.stamp)) {
     ++rejected_;
     return false;
@@ -37,6 +37,7 @@ bool PerceptionEstimator::addSample(const PoseSample& s) {
   } else {
     latest_ = s;
   }
+  arrival_ = arrival;
   have_ = true;
   return true;
 }
@@ -44,7 +45,7 @@ bool PerceptionEstimator::addSample(const PoseSample& s) {
 int PerceptionEstimator::update(double now, PoseSource& source) {
   int n = 0;
   PoseSample s;
-  while (source.poll(now, s)) n += addSample(s) ? 1 : 0;
+  while (source.poll(now, s)) n += addSample(s, now) ? 1 : 0;
   return n;
 }
 
@@ -57,13 +58,15 @@ const PerceptionEstimate& PerceptionEstimator::estimate(double now, ObjectHolder
   if (have_) {
     h.stamp = latest_.stamp;
     h.age = now - latest_.stamp;
-    h.stale = h.age > settings_.max_age;
+    h.silence = now - arrival_;
+    h.latency = arrival_ - latest_.stamp;
+    h.stale = h.silence > settings_.max_gap || h.latency > settings_.max_latency;
     h.hand = latest_.hand.isometry();
     h.forearm = latest_.forearm.isometry();
     h.upper_arm = latest_.upper_arm.isometry();
   } else {
     h.stale = true;
-    h.age = 0.0;
+    h.age = h.silence = h.latency = 0.0;
   }
 
   ObjectEstimate& o = est_.object;

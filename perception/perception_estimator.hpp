@@ -1,6 +1,10 @@
 // Keeps the latest pose sample of the person and derives the object's pose.
-// Never extrapolates: a sample older than max_age is reported stale, and the
-// consumer decides what to do (hold, slow down). Who holds the object decides
+// Never extrapolates: when the stream stops (no sample has arrived for
+// max_gap) or delivers samples too late to act on (older than max_latency
+// when they arrive), the estimate is reported stale, and the consumer decides
+// what to do (hold, slow down). A sensor's steady latency alone is not
+// staleness: a 60 Hz tracker 90 ms behind delivers every sample ~0.1 s old,
+// and judging it by that age would hide every sample from the robot. Who holds the object decides
 // where its pose comes from: the person's hand (the tracked object pose when
 // the sample has one, else hand pose * hand->object offset; as old as the
 // hand sample) or the robot's forward kinematics (TCP
@@ -15,7 +19,8 @@
 namespace handover::perception {
 
 struct EstimatorSettings {
-  double max_age = 0.1;  ///< s; samples older than this are stale
+  double max_gap = 0.1;      ///< s without a new sample arriving: the stream stopped (stale)
+  double max_latency = 0.2;  ///< s; a sample older than this when it arrives is too late to act on (stale)
   /// s, time constant of the first-order smoothing applied to each new
   /// sample (positions exponentially, rotations by slerp), 0 = none. A
   /// 60 Hz pose stream with white noise otherwise reaches the observation
@@ -36,9 +41,11 @@ enum class ObjectHolder { Nobody, Person, Robot };
 
 struct HumanEstimate {
   bool valid = false;  ///< a sample has arrived since the start
-  bool stale = true;   ///< no sample, or the latest is older than max_age
+  bool stale = true;   ///< no sample, none for max_gap, or the latest arrived older than max_latency
   double stamp = 0.0;  ///< s, measurement time of the latest sample
   double age = 0.0;    ///< s, now - stamp (0 if none)
+  double silence = 0.0;  ///< s since the latest sample arrived (0 if none)
+  double latency = 0.0;  ///< s, how old the latest sample was when it arrived
   Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d forearm = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d upper_arm = Eigen::Isometry3d::Identity();
@@ -62,8 +69,11 @@ class PerceptionEstimator {
   explicit PerceptionEstimator(const EstimatorSettings& settings = {});
   void reset();
 
-  /// Takes a sample if it is finite and not older than the latest one.
-  bool addSample(const PoseSample& s);
+  /// Takes a sample if it is finite and not older than the latest one;
+  /// `arrival`: when it was received (s, the clock of estimate()), by
+  /// default its own stamp (no latency).
+  bool addSample(const PoseSample& s, double arrival);
+  bool addSample(const PoseSample& s) { return addSample(s, s.stamp); }
   /// Drains `source` of everything that arrived by `now`; returns how many were taken.
   int update(double now, PoseSource& source);
   /// Changes where the object sits in the hand (e.g. after the person re-grasps).
@@ -84,6 +94,7 @@ class PerceptionEstimator {
   EstimatorSettings settings_;
   bool have_ = false;
   PoseSample latest_;
+  double arrival_ = 0.0;  ///< s, when latest_ arrived
   PerceptionEstimate est_;
   long rejected_ = 0;
 };

@@ -26,7 +26,8 @@ CycleSettings defaultCycleSettings() {
   s.gripper_force = fp.gripper_force;
   s.ft_gravity_sign = fp.ft_gravity_sign;
   const perception::PerceptionConfig p = perception::loadPerceptionConfig(perception::defaultPerceptionConfigPath());
-  s.estimator.max_age = p.max_age;
+  s.estimator.max_gap = p.max_gap;
+  s.estimator.max_latency = p.max_latency;
   s.estimator.smoothing_time = p.smoothing_time;
   s.estimator.rotation_smoothing_time = p.rotation_smoothing_time;
   s.target.blend_time = p.blend_time;
@@ -176,7 +177,7 @@ void HandoverCycle::assembleInput(double t, const io::ArmState& arm, const perce
   in.hand.pose = est.human.hand;
   in.hand.velocity = hand_vel_.velocity();
   in.hand.valid = est.human.valid && !est.human.stale;
-  in.hand.age = est.human.valid ? est.human.age : 1e9;
+  in.hand.age = est.human.valid ? est.human.silence : 1e9;  // a steady latency is not silence
   in.object.pose = est.object.pose;
   in.object.velocity = robot_holds ? controller_.tcpVelocity() : object_vel_.velocity();
   in.object.valid = est.object.valid && !est.object.stale;

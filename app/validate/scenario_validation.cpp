@@ -98,7 +98,7 @@ void validateScenario(const scenario::Scenario& sc) {
                                           " s must equal the simulator's step " + fmt(kSceneTimestep) +
                                           " s (the run steps both once per cycle)");
   }
-  // a latency at or beyond the estimator's max_age (perception.yaml) is a
+  // a latency beyond the estimator's max_latency (perception.yaml) is a
   // valid scenario (the contract allows up to 1 s): the robot then sees only
   // stale samples, a sensing fault the run reports, not bad input
 

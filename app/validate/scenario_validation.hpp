@@ -6,8 +6,6 @@
 //   scenario's line;
 // - the control period equals the simulator's step (the run steps both once
 //   per millisecond);
-// - the sensor's latency plus one sample period stays below the estimator's
-//   max_age (config/perception.yaml), or every sample arrives stale;
 // - start_q keeps the robot clear of the table, itself and the person as
 //   placed at t = 0;
 // - the scaled torque limits hold the arm (and the object it carries) against

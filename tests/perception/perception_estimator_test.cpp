@@ -18,9 +18,9 @@ PoseSample at(double t, double x) {
 }
 }  // namespace
 
-TEST(PerceptionEstimator, StaleAfterMaxAgeAndNeverExtrapolates) {
+TEST(PerceptionEstimator, StaleAfterMaxGapAndNeverExtrapolates) {
   EstimatorSettings cfg;
-  cfg.max_age = 0.1;
+  cfg.max_gap = 0.1;
   PerceptionEstimator est(cfg);
   EXPECT_FALSE(est.estimate(0.0, ObjectHolder::Person).human.valid);
   EXPECT_TRUE(est.estimate(0.0, ObjectHolder::Person).human.stale);
@@ -105,4 +105,32 @@ TEST(PerceptionEstimator, TrackedObjectPoseReplacesTheHandOffset) {
   Eigen::Isometry3d tcp = Eigen::Isometry3d::Identity();
   tcp.translation() = Eigen::Vector3d(0.4, 0.0, 0.5);
   EXPECT_LT((est.estimate(1.02, ObjectHolder::Robot, tcp).object.pose.translation() - tcp.translation()).norm(), 1e-12);
+}
+
+TEST(PerceptionEstimator, SteadyLatencyIsNotStalenessButLateSamplesAre) {
+  EstimatorSettings cfg;
+  cfg.max_gap = 0.1;
+  cfg.max_latency = 0.2;
+  PerceptionEstimator est(cfg);
+  // a 60 Hz stream 90 ms late: every sample is ~0.1 s old when read, yet the
+  // stream is alive
+  const double period = 1.0 / 60, latency = 0.09;
+  for (int k = 0; k < 3; ++k) ASSERT_TRUE(est.addSample(at(1.0 + k * period, 0.5 + 0.01 * k), 1.0 + k * period + latency));
+  const double last_arrival = 1.0 + 2 * period + latency;
+  const auto& e = est.estimate(last_arrival + 0.015, ObjectHolder::Person);
+  EXPECT_GT(e.human.age, 0.1);
+  EXPECT_NEAR(e.human.silence, 0.015, 1e-9);
+  EXPECT_NEAR(e.human.latency, latency, 1e-9);
+  EXPECT_FALSE(e.human.stale);
+  EXPECT_FALSE(e.object.stale);
+  // the stream stops: stale once no sample has come for max_gap
+  EXPECT_TRUE(est.estimate(last_arrival + 0.11, ObjectHolder::Person).human.stale);
+
+  // samples that arrive 0.3 s late are too late to act on, however steady
+  PerceptionEstimator est2(cfg);
+  ASSERT_TRUE(est2.addSample(at(1.0, 0.5), 1.3));
+  ASSERT_TRUE(est2.addSample(at(1.0 + period, 0.51), 1.3 + period));
+  const auto& e2 = est2.estimate(1.3 + period, ObjectHolder::Person);
+  EXPECT_TRUE(e2.human.valid);
+  EXPECT_TRUE(e2.human.stale);
 }
