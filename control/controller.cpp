@@ -1,5 +1,6 @@
 #include "control/controller.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "control/qp/goldfarb_idnani.hpp"
@@ -24,6 +25,7 @@ Controller::Controller(Model model, const ControllerConfig& config, std::unique_
       config_(config),
       formulation_(controllerCapacity()),
       solver_(std::move(solver)),
+      disturbance_(config.disturbance, model_.tau_max),
       x_(Eigen::VectorXd::Zero(kNumVars)),
       obs_A_(Eigen::MatrixXd::Zero(6, kNumVars)),
       obs_b_(Eigen::VectorXd::Zero(6)) {
@@ -88,6 +90,7 @@ void Controller::reset(const ControlInputs& in) {
   tau_ = data_.h;
   external_wrench_.setZero();
   tau_external_.setZero();
+  disturbance_.reset();
   frameJacobian(model_, data_, ft_id_, J_ft_);
   status_ = QpStatus::kOptimal;
   iterations_ = 0;
@@ -126,7 +129,9 @@ const Vector7& Controller::step(const ControlInputs& in) {
   // compute once, then tasks and constraints only read
   computeAll(model_, data_, in.q, in.qd);
   frameJacobian(model_, data_, ft_id_, J_ft_);
-  tau_external_.noalias() = J_ft_.transpose() * external_wrench_;
+  disturbance_.update(data_, in.qd, tau_, config_.period);  // tau_: what the last period applied
+  tau_external_.noalias() = (1.0 - disturbance_gain_) * J_ft_.transpose() * external_wrench_;
+  if (disturbance_gain_ > 0.0) tau_external_ += disturbance_gain_ * disturbance_.torque();
   const ControlContext ctx = context(in.time);
   formulation_.build(ctx, problem_);
 
@@ -218,6 +223,10 @@ void Controller::clearPayload() { control::clearPayload(model_, data_); }
 
 void Controller::setExternalWrench(const Vector6& wrench) {
   if (wrench.allFinite()) external_wrench_ = wrench;
+}
+
+void Controller::setDisturbanceGain(double g) {
+  if (std::isfinite(g)) disturbance_gain_ = std::clamp(g, 0.0, 1.0);
 }
 
 Vector3 Controller::sensorAcceleration() const {

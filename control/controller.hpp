@@ -3,7 +3,8 @@
 //   computeAll(q, qdot) -> tasks and constraints fill one QP over
 //   chi = [qddot (7); alphadot_obs (6)] -> solve -> integrate the observed
 //   object with alphadot_obs -> tau = M qddot + h - J_ft^T f (payload included;
-//   f the known external wrench at the wrist sensor, setExternalWrench).
+//   f the known external wrench at the wrist sensor, setExternalWrench; while
+//   carrying, the observed joint disturbance instead, setDisturbanceGain).
 //
 // Tasks (names): "observation", "tracking", "posture", "pose" (disabled at
 // start). Keep "observation" on whenever "tracking" is on: the tracking rows
@@ -86,6 +87,13 @@ class Controller {
   /// the next step on. Non-finite input is ignored (the last value is kept).
   void setExternalWrench(const Vector6& wrench);
   const Vector6& externalWrench() const { return external_wrench_; }
+  /// How much of the observed joint disturbance (DisturbanceObserver) the
+  /// dynamics hold instead of the external wrench, 0..1 (clamped):
+  /// tau = M qddot + h - ((1 - g) J_ft^T f + g d). The caller ramps it with
+  /// the carry feed-forward (config disturbance.compensation). RT safe.
+  void setDisturbanceGain(double g);
+  /// The observer's current estimate (N m), fed back or not.
+  const Vector7& disturbanceTorque() const { return disturbance_.torque(); }
   /// Linear acceleration of the "ft_sensor" origin (world, m/s^2) the last
   /// step commanded: J qddot + Jdot qdot at its state.
   Vector3 sensorAcceleration() const;
@@ -149,6 +157,8 @@ class Controller {
   int ft_id_ = 0;
   Vector6 external_wrench_ = Vector6::Zero();
   Vector7 tau_external_ = Vector7::Zero();
+  DisturbanceObserver disturbance_;
+  double disturbance_gain_ = 0.0;
   Matrix6x7 J_ft_ = Matrix6x7::Zero();
 
   std::shared_ptr<ObservationTask> observation_;

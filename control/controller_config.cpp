@@ -122,6 +122,7 @@ ControllerConfig parseControllerConfig(const YamlReader& root) {
     s->finish();
   }
   if (auto s = section(root, "contact_wrench")) cfg.contact_wrench = parseContactWrenchSettings(*s);
+  if (auto s = section(root, "disturbance")) cfg.disturbance = parseDisturbanceSettings(*s);
   if (auto s = section(root, "fallback")) {
     if (auto c = s->optionalChild("damping")) cfg.fallback.damping = c->checkRange(c->asDouble(), 0.0, 1000.0);
     s->finish();

@@ -10,6 +10,7 @@
 #include "control/constraints/joint_position_limit.hpp"
 #include "control/tasks/pd_gains.hpp"
 #include "control/wrench/contact_wrench.hpp"
+#include "control/wrench/disturbance_observer.hpp"
 #include "control/types.hpp"
 
 namespace handover::control {
@@ -65,6 +66,8 @@ struct ControllerConfig {
 
   /// The wrist force-torque sensor's load in the dynamics (contact_wrench.hpp).
   ContactWrenchSettings contact_wrench;
+  /// The joint torque the model misses, fed back while carrying (disturbance_observer.hpp).
+  DisturbanceSettings disturbance;
 
   struct Fallback {
     double damping = 20.0;  ///< kd of the damped stop qddot = -kd qdot, 1/s

@@ -92,6 +92,9 @@ class ContactWrenchEstimator {
   /// load minus what payload() puts in the model. Zero when feed_forward is
   /// off and until the offset is calibrated.
   const Vector6& feedForward() const { return feed_forward_; }
+  /// 0..1: the feed-forward's ramp (1 while the robot alone carries the
+  /// object in mode carry), also the gate of the joint disturbance's feedback.
+  double feedForwardGain() const { return ff_gain_; }
   bool calibrated() const { return calibrator_.done(); }
   const FtBiasCalibrator& calibrator() const { return calibrator_; }
   const ContactWrenchSettings& settings() const { return settings_; }

@@ -91,3 +91,13 @@ TEST(ControllerConfig, InconsistentMarginsAreRejected) {
 TEST(ControllerConfig, MissingFileIsAnInputError) {
   EXPECT_THROW(loadControllerConfig("/nonexistent/controller.yaml"), InputError);
 }
+
+TEST(ControllerConfig, DisturbanceSectionIsReadAndChecked) {
+  const ControllerConfig c = loadControllerConfig(writeTemp(
+      "ctl_dist.yaml", "disturbance:\n  compensation: off\n  filter_tau: 0.05\n  max_torque_fraction: 0.2\n"));
+  EXPECT_EQ(c.disturbance.compensation, DisturbanceSettings::Compensation::kOff);
+  EXPECT_DOUBLE_EQ(c.disturbance.filter_tau, 0.05);
+  EXPECT_DOUBLE_EQ(c.disturbance.max_torque_fraction, 0.2);
+  expectError("disturbance:\n  compensation: always\n", "disturbance.compensation", 2);
+  expectError("disturbance:\n  max_torque_fraction: 2\n", "disturbance.max_torque_fraction", 2);
+}
