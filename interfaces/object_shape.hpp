@@ -1,7 +1,8 @@
 // The hand-held object's primitive shape, in the object's own frame: origin at
 // the shape's centre, a cylinder's axis along z, a box's edges along x, y, z
 // (as in the scenes and the scenario files). Neutral: the scenario checks, the
-// collision model's setup and the state machine's grasp funnel read it.
+// collision model's setup, the state machine's grasp funnel, the presentation
+// seats and the simulated person read it.
 // Units: m. Real-time safe (no allocation).
 #pragma once
 
@@ -37,6 +38,24 @@ inline double extentAlong(const ObjectShape& s, const Eigen::Vector3d& u_in) {
       return 2.0 * s.size.x() * std::sqrt(1.0 - c * c) + s.size.y() * c;
     }
     case ObjectShape::Kind::kBox: return u.cwiseAbs().dot(s.size);
+    case ObjectShape::Kind::kUnknown: break;
+  }
+  return 0.0;
+}
+
+/// Signed distance (m) from the point `p` (object frame) to the shape's
+/// surface: negative inside; 0 when the shape is unknown.
+inline double signedDistance(const ObjectShape& s, const Eigen::Vector3d& p) {
+  switch (s.kind) {
+    case ObjectShape::Kind::kSphere: return p.norm() - s.size.x();
+    case ObjectShape::Kind::kCylinder: {
+      const Eigen::Vector2d d(p.head<2>().norm() - s.size.x(), std::abs(p.z()) - 0.5 * s.size.y());
+      return std::min(d.maxCoeff(), 0.0) + d.cwiseMax(0.0).norm();
+    }
+    case ObjectShape::Kind::kBox: {
+      const Eigen::Vector3d d = p.cwiseAbs() - 0.5 * s.size;
+      return std::min(d.maxCoeff(), 0.0) + d.cwiseMax(0.0).norm();
+    }
     case ObjectShape::Kind::kUnknown: break;
   }
   return 0.0;

@@ -1,5 +1,7 @@
 #include "scenes/human/human_facts.hpp"
 
+#include "scenes/scenario/object_geometry.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -7,21 +9,7 @@ namespace handover::human {
 
 double distanceToObject(const scenario::ObjectSpec& object, const Eigen::Isometry3d& object_pose,
                         const Eigen::Vector3d& point_world) {
-  const Eigen::Vector3d p = object_pose.inverse() * point_world;
-  switch (object.shape) {
-    case scenario::Shape::Sphere:
-      return std::max(0.0, p.norm() - object.size[0]);
-    case scenario::Shape::Box: {
-      const Eigen::Vector3d half(object.size[0] / 2, object.size[1] / 2, object.size[2] / 2);
-      return (p.cwiseAbs() - half).cwiseMax(0.0).norm();
-    }
-    case scenario::Shape::Cylinder: {
-      const double radial = std::max(0.0, std::hypot(p.x(), p.y()) - object.size[0]);
-      const double axial = std::max(0.0, std::abs(p.z()) - object.size[1] / 2);
-      return std::hypot(radial, axial);
-    }
-  }
-  return 0.0;
+  return std::max(0.0, scenario::signedDistanceToObject(object, object_pose.inverse() * point_world));
 }
 
 HumanFacts computeHumanFacts(const sim::ContactReport& contacts, const sim::ObjectState& object_state,

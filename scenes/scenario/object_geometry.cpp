@@ -21,19 +21,7 @@ double objectExtent(const ObjectSpec& obj, const Eigen::Vector3d& u) { return io
 double objectWidthAcrossFingers(const ObjectSpec& obj) { return objectExtent(obj, obj.grasp.linear().col(1)); }
 
 double signedDistanceToObject(const ObjectSpec& obj, const Eigen::Vector3d& p) {
-  switch (obj.shape) {
-    case Shape::Sphere: return p.norm() - obj.size[0];
-    case Shape::Cylinder: {
-      const Eigen::Vector2d d(p.head<2>().norm() - obj.size[0], std::abs(p.z()) - obj.size[1] / 2.0);
-      return std::min(d.maxCoeff(), 0.0) + d.cwiseMax(0.0).norm();
-    }
-    case Shape::Box: {
-      const Eigen::Vector3d half(obj.size[0] / 2.0, obj.size[1] / 2.0, obj.size[2] / 2.0);
-      const Eigen::Vector3d d = p.cwiseAbs() - half;
-      return std::min(d.maxCoeff(), 0.0) + d.cwiseMax(0.0).norm();
-    }
-  }
-  return 0.0;
+  return io::signedDistance(primitiveShapeOf(obj), p);
 }
 
 double objectVolume(const ObjectSpec& obj) {

@@ -29,8 +29,8 @@ GraspPlanningSettings bottleSettings(bool with_shape_families) {
   s.object_grasps.push_back(side);
   if (with_shape_families)
     for (const auto& g : cg::shapeGraspSpecs(cg::PrimitiveShape::kCylinder, {0.03, 0.20})) s.object_grasps.push_back(g);
-  s.presentation.translation() = control::Vector3(0.0, 0.0, 0.05);
-  s.presentation.linear() = side.placement.linear();
+  s.presentations[0].translation() = control::Vector3(0.0, 0.0, 0.05);
+  s.presentations[0].linear() = side.placement.linear();
   return s;
 }
 
