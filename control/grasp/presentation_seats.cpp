@@ -68,6 +68,9 @@ std::vector<Isometry> presentationSeats(const SeatGeometry& g, const SeatOptions
         Isometry X = Isometry::Identity();
         X.linear() = R;
         X.translation() = o.step * Vector3(i, j, k);
+        // the hand under or around the object's centre, bearing its weight: a box
+        // hung 12 cm below the palm by its top was dragged over the table
+        if (X.translation().z() < -1e-12) continue;
         // the grip point in (or at) the object
         if (io::signedDistance(g.object, X.inverse() * Vector3::Zero()) > o.reach) continue;
         const Isometry tcp = X * g.tcp_in_object;

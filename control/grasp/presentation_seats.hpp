@@ -10,7 +10,9 @@
 // lifts the TCP out of the arm's reach when the hand is high. A seat here is
 // an object position in the hand frame, its rotation the declared one, where
 //   - the grip point (hand origin) is inside the object or within `reach` of
-//     its surface: the object is in the hand, and
+//     its surface: the object is in the hand,
+//   - the object's centre is not below the grip point: the hand is under or
+//     around it, bearing its weight, and
 //   - every gripper capsule, the object held by the declared grasp, keeps
 //     `clearance` from the hand's box: the robot can get there without its
 //     collision constraint holding it off.

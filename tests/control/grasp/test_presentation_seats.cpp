@@ -108,3 +108,15 @@ TEST(PresentationSeats, NoneWhenNothingFits) {
 
 }  // namespace
 }  // namespace handover::control::grasp
+
+namespace handover::control::grasp {
+namespace {
+TEST(PresentationSeats, TheHandIsNeverAboveTheObjectsCentre) {
+  Isometry top = Isometry::Identity();
+  top.linear() = Eigen::AngleAxisd(M_PI, Vector3::UnitX()).toRotationMatrix();
+  top.translation() = Vector3(0.0, 0.0, 0.035);
+  const SeatGeometry g = geometry(io::ObjectShape::Kind::kBox, Vector3(0.07, 0.06, 0.15), top);
+  for (const Isometry& s : presentationSeats(g, SeatOptions{})) EXPECT_GE(s.translation().z(), 0.0);
+}
+}  // namespace
+}  // namespace handover::control::grasp
