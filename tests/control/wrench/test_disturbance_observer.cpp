@@ -36,6 +36,19 @@ struct Plant {
   }
 };
 
+/// Drives the plant with gravity compensation that does not know its
+/// disturbance, `steps` periods, the observer watching.
+void observeUnderGravityCompensation(Plant& plant, DisturbanceObserver& obs, int steps) {
+  Data model_data(panda());
+  Vector7 tau = Vector7::Zero();
+  for (int k = 0; k < steps; ++k) {
+    computeAll(panda(), model_data, plant.q, plant.v);
+    obs.update(model_data, plant.v, tau, kDt);
+    tau = model_data.h;
+    plant.step(tau);
+  }
+}
+
 const Vector7 kReady = (Vector7() << 0.0, -0.785398, 0.0, -2.356194, 0.0, 1.570796, 0.785398).finished();
 
 TEST(DisturbanceObserver, RecoversATorqueTheModelDoesNotKnow) {
@@ -44,14 +57,7 @@ TEST(DisturbanceObserver, RecoversATorqueTheModelDoesNotKnow) {
   DisturbanceSettings s;
   s.max_torque_fraction = 1.0;
   DisturbanceObserver obs(s, panda().tau_max);
-  Data model_data(panda());
-  Vector7 tau = Vector7::Zero();
-  for (int k = 0; k < 300; ++k) {
-    computeAll(panda(), model_data, plant.q, plant.v);
-    obs.update(model_data, plant.v, tau, kDt);
-    tau = model_data.h;  // gravity compensation that does not know the disturbance
-    plant.step(tau);
-  }
+  observeUnderGravityCompensation(plant, obs, 300);
   // within 1 % of its size: the observer evaluates M and h at the period's
   // end, the plant moved under them (the arm falls freely along d)
   const double tol = 0.01 * plant.disturbance.norm();
@@ -66,14 +72,7 @@ TEST(DisturbanceObserver, HoldsAtMostItsShareOfTheTorqueLimits) {
   DisturbanceSettings s;
   s.max_torque_fraction = 0.1;
   DisturbanceObserver obs(s, panda().tau_max);
-  Data model_data(panda());
-  Vector7 tau = Vector7::Zero();
-  for (int k = 0; k < 200; ++k) {
-    computeAll(panda(), model_data, plant.q, plant.v);
-    obs.update(model_data, plant.v, tau, kDt);
-    tau = model_data.h;
-    plant.step(tau);
-  }
+  observeUnderGravityCompensation(plant, obs, 200);
   EXPECT_NEAR(obs.torque()[0], 0.1 * panda().tau_max[0], 1e-9);
   EXPECT_NEAR(obs.torque()[6], -0.1 * panda().tau_max[6], 1e-9);
 }
