@@ -49,13 +49,7 @@ hysteresis: 0.3
 table: {height: 0.1, clearance: 0.05}
 cold_solves_per_update: 5
 upright: {yaw_step_deg: 20, tilt_tolerance_deg: 5, position_offsets: [[0, 0, 0], [0, 0, 0.1]]}
-seats: {reach: 0.03, clearance: 0.02, step: 0.02, range: 0.1, max_seats: 1}
 )");
-  EXPECT_DOUBLE_EQ(c.seats.reach, 0.03);
-  EXPECT_DOUBLE_EQ(c.seats.clearance, 0.02);
-  EXPECT_DOUBLE_EQ(c.seats.step, 0.02);
-  EXPECT_DOUBLE_EQ(c.seats.range, 0.1);
-  EXPECT_EQ(c.seats.max_seats, 1);
   EXPECT_EQ(c.frame, "hand");
   EXPECT_EQ(c.ik.max_iterations, 12);
   EXPECT_DOUBLE_EQ(c.ik.position_tolerance, 2.0e-4);
@@ -87,9 +81,6 @@ TEST(GraspSelectionConfig, RejectsBadInputNamingFileAndKey) {
   EXPECT_NE(errorOf("ik: {seeds: [[0, 0, 0]]}\n").find("ik.seeds"), std::string::npos);
   EXPECT_NE(errorOf("hysteresis: lots\n").find("hysteresis"), std::string::npos);
   EXPECT_NE(errorOf("upright: {position_offsets: []}\n").find("position_offsets"), std::string::npos);
-  EXPECT_NE(errorOf("seats: {max_seats: 3}\n").find("seats.max_seats"), std::string::npos);
-  EXPECT_NE(errorOf("seats: {reach: -0.01}\n").find("seats.reach"), std::string::npos);
-  EXPECT_NE(errorOf("seats: {range: 0.3, step: 0.001}\n").find("seats"), std::string::npos);  // a grid too fine
 }
 
 }  // namespace
