@@ -1,8 +1,8 @@
 // The hand-held object's primitive shape, in the object's own frame: origin at
 // the shape's centre, a cylinder's axis along z, a box's edges along x, y, z
 // (as in the scenes and the scenario files). Neutral: the scenario checks, the
-// collision model's setup, the state machine's grasp funnel, the presentation
-// seats and the simulated person read it.
+// collision model's setup, the state machine's grasp funnel and the simulated
+// person read it.
 // Units: m. Real-time safe (no allocation).
 #pragma once
 

@@ -1,7 +1,5 @@
 #include "runtime/grasp_planning.hpp"
 
-#include <stdexcept>
-
 #include "control/grasp/upright_placement.hpp"
 
 namespace handover::runtime {
@@ -18,19 +16,12 @@ cg::GraspSelectionConfig presentationSelectionConfig(cg::GraspSelectionConfig co
 }
 
 namespace {
-std::vector<cg::GraspSpec> presentationSpecs(const std::vector<control::Isometry>& presentations,
-                                             double first_preference) {
-  if (presentations.empty()) throw std::invalid_argument("grasp planning: no presentation");
-  std::vector<cg::GraspSpec> specs;
-  for (const control::Isometry& p : presentations) {
-    cg::GraspSpec s;
-    s.placement = p;
-    s.has_free_axis = true;  // any turn about the hand's vertical
-    s.free_axis = control::Vector3::UnitZ();
-    s.preference = specs.empty() ? first_preference : 0.0;
-    specs.push_back(s);
-  }
-  return specs;
+std::vector<cg::GraspSpec> presentationSpecs(const control::Isometry& presentation) {
+  cg::GraspSpec s;
+  s.placement = presentation;
+  s.has_free_axis = true;  // any turn about the hand's vertical
+  s.free_axis = control::Vector3::UnitZ();
+  return {s};
 }
 }  // namespace
 
@@ -38,8 +29,7 @@ GraspPlanning::GraspPlanning(const control::Model& model, const GraspPlanningSet
     : model_(model),
       settings_(settings),
       object_(model, settings.object_grasps, settings.config),
-      hand_(model, presentationSpecs(settings.presentations, settings.config.declared_preference),
-            presentationSelectionConfig(settings.config)) {}
+      hand_(model, presentationSpecs(settings.presentation), presentationSelectionConfig(settings.config)) {}
 
 void GraspPlanning::reset() {
   object_.reset();

@@ -9,11 +9,9 @@
 // free axis, the gripper's half-turn twins) the one the arm reaches best,
 // avoiding the person's forearm and upper arm.
 // Give: while the robot holds the object, each new hand sample re-selects the
-// presentation: the seats the object may take in the hand
-// (control/grasp/presentation_seats.hpp: in reach of the grip point, the
-// gripper clear of the hand; the first preferred), each TCP-in-hand frame
-// turned about the hand's z axis (the receiver takes the object at any turn
-// about the vertical), no twins (the held object would turn with the gripper).
+// presentation: the declared TCP-in-hand frame turned about the hand's z axis
+// (the receiver takes the object at any turn about the vertical), no twins
+// (the held object would turn with the gripper).
 //
 // Frames: world; offsets in the observed frame (object or hand). Units: m, rad.
 // Real-time: the constructor allocates; update() and uprightPlacement() do
@@ -33,9 +31,7 @@ namespace handover::runtime {
 struct GraspPlanningSettings {
   control::grasp::GraspSelectionConfig config;        ///< config/grasp_selection.yaml
   std::vector<control::grasp::GraspSpec> object_grasps;  ///< what the object admits (at least one)
-  /// TCP poses in the receiver's hand frame to present at, best first (the
-  /// first gets config.declared_preference); at least one.
-  std::vector<control::Isometry> presentations{control::Isometry::Identity()};
+  control::Isometry presentation = control::Isometry::Identity();  ///< declared TCP pose in the receiver's hand frame
   double forearm_length = 0.27, upper_arm_length = 0.33;  ///< m, the person's arm capsules
   double forearm_radius = 0.045, upper_arm_radius = 0.055;  ///< m
   double hand_radius = 0.05;  ///< m, a sphere around the grip point (take: grasp away from the hand)
@@ -43,7 +39,7 @@ struct GraspPlanningSettings {
 
 class GraspPlanning : public fsm::PlannerInterface {
  public:
-  /// Throws std::invalid_argument without object grasps or presentations; `model` must outlive it.
+  /// Throws std::invalid_argument without object grasps; `model` must outlive it.
   GraspPlanning(const control::Model& model, const GraspPlanningSettings& settings);
 
   /// Re-selects on a new sample (take: the object while the person holds

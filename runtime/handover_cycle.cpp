@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "control/grasp/presentation_seats.hpp"
 #include "control/model/algorithms.hpp"
 #include "fsm/handover/handover_params.hpp"
 #include "perception/perception_config.hpp"
@@ -13,28 +12,6 @@ namespace handover::runtime {
 
 namespace {
 double clip(double v) { return std::isfinite(v) ? std::min(v, 2.0) : 2.0; }
-
-/// The TCP-in-hand frames to present the object at: its seats in the hand
-/// (presentation_seats.hpp) held by the declared grasp, best first; the
-/// declared seat alone when the shape is unknown or no seat is clear.
-std::vector<control::Isometry> presentationSeatsOf(const control::Model& model, const CycleSettings& settings,
-                                                   const control::Isometry& object_in_hand) {
-  const control::Isometry grasp = settings.object.grasp_in_object;
-  if (!settings.object.shape.known()) return {object_in_hand * grasp};
-  control::grasp::SeatGeometry g;
-  g.object = settings.object.shape;
-  g.object_in_hand = object_in_hand;
-  g.tcp_in_object = grasp;
-  g.gripper_in_tcp = control::grasp::gripperCapsulesIn(model, settings.grasp_selection.frame);
-  g.hand_box_in_hand = settings.collision.person.hand_offset;
-  g.hand_box_size = settings.collision.person.hand_size;
-  std::vector<control::Isometry> out;
-  for (const control::Isometry& seat : control::grasp::presentationSeats(g, settings.grasp_selection.seats)) {
-    out.push_back(seat * grasp);
-  }
-  if (out.empty()) out.push_back(object_in_hand * grasp);
-  return out;
-}
 }  // namespace
 
 CycleSettings defaultCycleSettings() {
@@ -76,7 +53,7 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
     GraspPlanningSettings ps;
     ps.config = settings.grasp_selection;
     ps.object_grasps = settings.object_grasps;
-    ps.presentations = presentationSeatsOf(controller_.model(), settings, machine_->params().object_in_hand);
+    ps.presentation = machine_->context().presentation.offset;
     ps.forearm_length = settings.forearm_length;
     ps.upper_arm_length = settings.upper_arm_length;
     ps.forearm_radius = settings.collision.person.forearm_radius;

@@ -79,18 +79,6 @@ UprightOptions readUpright(const YamlReader& r) {
   return o;
 }
 
-SeatOptions readSeats(const YamlReader& r) {
-  SeatOptions o;
-  o.reach = nonNegative(r, "reach", o.reach, 0.1);
-  o.clearance = nonNegative(r, "clearance", o.clearance, 0.1);
-  o.step = positive(r, "step", o.step, 0.05);
-  o.range = positive(r, "range", o.range, 0.5);
-  if (auto c = r.optionalChild("max_seats")) o.max_seats = static_cast<int>(c->checkRange(c->asInt(), 1, 2));
-  if (o.range / o.step > 60.0) r.fail("range / step must be at most 60 (the grid has (2 range / step + 1)^3 points)");
-  r.finish();
-  return o;
-}
-
 }  // namespace
 
 GraspSelectionConfig graspSelectionConfigFrom(const YamlReader& root) {
@@ -111,7 +99,6 @@ GraspSelectionConfig graspSelectionConfigFrom(const YamlReader& root) {
     c.cold_solves_per_update = static_cast<int>(r->checkRange(r->asInt(), 0, 100000));
   }
   if (auto r = root.optionalChild("upright")) c.upright = readUpright(*r);
-  if (auto r = root.optionalChild("seats")) c.seats = readSeats(*r);
   root.finish();
   return c;
 }

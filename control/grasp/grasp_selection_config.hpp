@@ -10,7 +10,6 @@
 #include "control/grasp/grasp_candidates.hpp"
 #include "control/grasp/grasp_score.hpp"
 #include "control/grasp/inverse_kinematics.hpp"
-#include "control/grasp/presentation_seats.hpp"
 
 namespace handover::control::grasp {
 
@@ -42,7 +41,6 @@ struct GraspSelectionConfig {
   /// seeds are tried regardless.
   int cold_solves_per_update = 2;
   UprightOptions upright;
-  SeatOptions seats;  ///< where a given object may sit in the receiver's hand
 };
 
 /// Reads and validates a config file (see config/grasp_selection.yaml for every key).

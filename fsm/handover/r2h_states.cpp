@@ -45,7 +45,6 @@ void Present::configure(const YamlReader& def) {
   settle_time_ = readRange(def, "settle_time", 0.0, 5.0);
   if (def.has("pull_threshold")) pull_threshold_ = readPositive(def, "pull_threshold", 100.0);
   if (def.has("pull_hold_time")) pull_hold_ = readRange(def, "pull_hold_time", 0.0, 5.0);
-  if (def.has("stalled_turn_speed")) turn_speed_tol_ = readPositive(def, "stalled_turn_speed", 1.0);
 }
 
 void Present::onStart(HandoverContext& ctx) {
@@ -70,12 +69,7 @@ bool Present::onRun(HandoverContext& ctx) {
     setOutput(withdrawn_);
     return true;
   }
-  // the orientation counts until it stops improving: a person who took hold
-  // while the wrist still turned holds the object as it is (r2h_no_pull with
-  // an object in reach before the turn ended never settled and was taken back)
-  const double turn_speed = (ctx.in.tcp_velocity.tail<3>() - ctx.in.target_velocity.tail<3>()).norm();
-  const bool turned_out = turn_speed_tol_ > 0.0 && turn_speed <= turn_speed_tol_;
-  if (!alignedWithTarget(ctx.in, pos_tol_, turned_out ? M_PI : rot_tol_, speed_tol_)) {
+  if (!alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_)) {
     since_ = -1.0;
     return false;
   }

@@ -26,10 +26,8 @@ class HoldReady : public HandoverState {
 
 /// [Presented, Withdrawn] Tracks the presentation frame (still relative to
 /// the hand) until position, orientation and relative speed errors stay within
-/// tolerance for settle_time; the orientation only while the wrist still turns
-/// faster than stalled_turn_speed. Keys: position_tolerance (m),
-/// orientation_tolerance_deg, stalled_turn_speed (rad/s, optional),
-/// speed_tolerance (m/s), settle_time (s).
+/// tolerance for settle_time. Keys: position_tolerance (m),
+/// orientation_tolerance_deg, speed_tolerance (m/s), settle_time (s).
 class Present : public HandoverState {
  public:
   Present();
@@ -40,7 +38,6 @@ class Present : public HandoverState {
  private:
   int presented_, withdrawn_, pulled_;
   double pos_tol_ = 0.02, rot_tol_ = 0.2, speed_tol_ = 0.05, settle_time_ = 0.2;
-  double turn_speed_tol_ = 0.0;  ///< rad/s: turning slower than this, the orientation is as good as it gets (0 = off)
   double pull_threshold_ = 0.0, pull_hold_ = 0.05;  ///< N (0 = off), s
   double since_ = -1.0, pull_since_ = -1.0;
 };

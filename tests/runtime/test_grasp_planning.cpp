@@ -29,8 +29,8 @@ GraspPlanningSettings bottleSettings(bool with_shape_families) {
   s.object_grasps.push_back(side);
   if (with_shape_families)
     for (const auto& g : cg::shapeGraspSpecs(cg::PrimitiveShape::kCylinder, {0.03, 0.20})) s.object_grasps.push_back(g);
-  s.presentations[0].translation() = control::Vector3(0.0, 0.0, 0.05);
-  s.presentations[0].linear() = side.placement.linear();
+  s.presentation.translation() = control::Vector3(0.0, 0.0, 0.05);
+  s.presentation.linear() = side.placement.linear();
   return s;
 }
 
@@ -128,12 +128,12 @@ namespace handover::runtime {
 namespace {
 TEST(GraspPlanning, APresentationIsPlannedWithoutAPreGraspBackedOffFromIt) {
   // the object is brought straight to the hand (ApproachHand has no standoff):
-  // a high hand, where the gripper pointing down reaches the seat but not a
-  // pose 8 cm above it, still gets a plan
+  // a high hand, where the gripper pointing down reaches the presentation but
+  // not a pose 8 cm above it, still gets a plan
   GraspPlanningSettings s = bottleSettings(false);
-  s.presentations[0] = control::Isometry::Identity();
-  s.presentations[0].linear() = Eigen::AngleAxisd(M_PI, control::Vector3::UnitX()).toRotationMatrix();
-  s.presentations[0].translation() = control::Vector3(0.0, 0.0, 0.08);
+  s.presentation = control::Isometry::Identity();
+  s.presentation.linear() = Eigen::AngleAxisd(M_PI, control::Vector3::UnitX()).toRotationMatrix();
+  s.presentation.translation() = control::Vector3(0.0, 0.0, 0.08);
   GraspPlanning planning(panda(), s);
   const control::Vector3 hand(0.65, 0.06, 0.45);
   perception::PerceptionEstimate e = offered(0.2, hand + control::Vector3(0.0, 0.0, 0.08));

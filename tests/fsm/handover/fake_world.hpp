@@ -104,7 +104,6 @@ struct World {
   double time = 0.0;
   Isometry tcp = Isometry::Identity();
   Vector3 tcp_vel = Vector3::Zero();
-  bool turn_blocked = false;                  // the TCP keeps its orientation (e.g. a grip stops the wrist)
   Vector3 hand = Vector3(0.9, 0.2, 0.2);      // person's grip point
   Vector3 hand_goal = hand;
   double hand_speed = 0.5;                    // m/s along a straight line
@@ -171,7 +170,7 @@ struct World {
     if (v.norm() > 0.5) v = v.normalized() * 0.5;
     tcp_vel = v;
     tcp.translation() += v * kDt;
-    if (!turn_blocked) tcp.linear() = d.linear();
+    tcp.linear() = d.linear();
     // gripper fingers at 0.1 m/s, stopped by the object if it is between them
     const bool between = graspable && (object - tcp.translation()).norm() < 0.015;
     const double target = c.gripper_width;
