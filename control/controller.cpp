@@ -25,7 +25,7 @@ Controller::Controller(Model model, const ControllerConfig& config, std::unique_
       config_(config),
       formulation_(controllerCapacity()),
       solver_(std::move(solver)),
-      disturbance_(config.disturbance, model_.tau_max),
+      disturbance_(config.disturbance, model_.tau_max, config.period),
       x_(Eigen::VectorXd::Zero(kNumVars)),
       obs_A_(Eigen::MatrixXd::Zero(6, kNumVars)),
       obs_b_(Eigen::VectorXd::Zero(6)) {
@@ -129,7 +129,7 @@ const Vector7& Controller::step(const ControlInputs& in) {
   // compute once, then tasks and constraints only read
   computeAll(model_, data_, in.q, in.qd);
   frameJacobian(model_, data_, ft_id_, J_ft_);
-  disturbance_.update(data_, in.qd, tau_, config_.period);  // tau_: what the last period applied
+  disturbance_.update(data_, in.qd, tau_);  // tau_: what the last period applied
   tau_external_.noalias() = (1.0 - disturbance_gain_) * J_ft_.transpose() * external_wrench_;
   if (disturbance_gain_ > 0.0) tau_external_ += disturbance_gain_ * disturbance_.torque();
   const ControlContext ctx = context(in.time);
@@ -226,6 +226,7 @@ void Controller::setExternalWrench(const Vector6& wrench) {
 }
 
 void Controller::setDisturbanceGain(double g) {
+  if (config_.disturbance.compensation == DisturbanceSettings::Compensation::kOff) g = 0.0;
   if (std::isfinite(g)) disturbance_gain_ = std::clamp(g, 0.0, 1.0);
 }
 

@@ -88,12 +88,11 @@ class Controller {
   void setExternalWrench(const Vector6& wrench);
   const Vector6& externalWrench() const { return external_wrench_; }
   /// How much of the observed joint disturbance (DisturbanceObserver) the
-  /// dynamics hold instead of the external wrench, 0..1 (clamped):
-  /// tau = M qddot + h - ((1 - g) J_ft^T f + g d). The caller ramps it with
-  /// the carry feed-forward (config disturbance.compensation). RT safe.
+  /// dynamics hold instead of the external wrench, 0..1 (clamped; always 0
+  /// with config disturbance.compensation off):
+  /// tau = M qddot + h - ((1 - g) J_ft^T f + g d). The caller passes the
+  /// carry feed-forward's ramp (ContactWrenchEstimator::feedForwardGain). RT safe.
   void setDisturbanceGain(double g);
-  /// The observer's current estimate (N m), fed back or not.
-  const Vector7& disturbanceTorque() const { return disturbance_.torque(); }
   /// Linear acceleration of the "ft_sensor" origin (world, m/s^2) the last
   /// step commanded: J qddot + Jdot qdot at its state.
   Vector3 sensorAcceleration() const;

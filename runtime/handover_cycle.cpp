@@ -147,8 +147,7 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   controller_.setPayload(contact_.payload());
   controller_.setExternalWrench(contact_.feedForward());
   // while carrying alone, the joint torque the model misses replaces the wrench (disturbance_observer.hpp)
-  const bool compensate = settings_.controller.disturbance.compensation == control::DisturbanceSettings::Compensation::kCarry;
-  controller_.setDisturbanceGain(compensate ? contact_.feedForwardGain() : 0.0);
+  controller_.setDisturbanceGain(contact_.feedForwardGain());
 
   // 7. the QP
   control_in_.time = t;

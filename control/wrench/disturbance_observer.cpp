@@ -4,8 +4,10 @@
 
 namespace handover::control {
 
-DisturbanceObserver::DisturbanceObserver(const DisturbanceSettings& settings, const Vector7& tau_max)
-    : settings_(settings), limit_(settings.max_torque_fraction * tau_max) {}
+DisturbanceObserver::DisturbanceObserver(const DisturbanceSettings& settings, const Vector7& tau_max, double period)
+    : period_(period),
+      alpha_(settings.filter_tau > 0.0 ? 1.0 - std::exp(-period / settings.filter_tau) : 1.0),
+      limit_(settings.max_torque_fraction * tau_max) {}
 
 void DisturbanceObserver::reset() {
   estimate_.setZero();
@@ -13,20 +15,19 @@ void DisturbanceObserver::reset() {
   have_prev_ = false;
 }
 
-void DisturbanceObserver::update(const Data& data, const Vector7& qd, const Vector7& tau_applied, double dt) {
-  if (!qd.allFinite() || !tau_applied.allFinite() || !(dt > 0.0)) return;
+void DisturbanceObserver::update(const Data& data, const Vector7& qd, const Vector7& tau_applied) {
+  if (!qd.allFinite() || !tau_applied.allFinite()) return;
   if (!have_prev_) {
     qd_prev_ = qd;
     have_prev_ = true;
     return;
   }
-  const Vector7 qdd = (qd - qd_prev_) / dt;
+  const Vector7 qdd = (qd - qd_prev_) / period_;
   qd_prev_ = qd;
   Vector7 d = data.M * qdd;
   d += data.h - tau_applied;
   if (!d.allFinite()) return;
-  const double a = settings_.filter_tau > 0.0 ? 1.0 - std::exp(-dt / settings_.filter_tau) : 1.0;
-  estimate_ += a * (d - estimate_);
+  estimate_ += alpha_ * (d - estimate_);
   estimate_ = estimate_.cwiseMax(-limit_).cwiseMin(limit_);
 }
 

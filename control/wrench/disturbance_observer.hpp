@@ -36,21 +36,22 @@ struct DisturbanceSettings {
 
 class DisturbanceObserver {
  public:
-  DisturbanceObserver(const DisturbanceSettings& settings, const Vector7& tau_max);
+  /// `period`: s between update() calls.
+  DisturbanceObserver(const DisturbanceSettings& settings, const Vector7& tau_max, double period);
 
   /// Forgets the history (a new run, a jump in the joint state).
   void reset();
   /// One period. `data`: computeAll at this period's (q, qdot); `tau_applied`:
   /// the torque commanded over the last period. The first call only stores
   /// qdot. Non-finite input keeps the last estimate. RT safe.
-  void update(const Data& data, const Vector7& qd, const Vector7& tau_applied, double dt);
+  void update(const Data& data, const Vector7& qd, const Vector7& tau_applied);
 
   /// The filtered, clipped disturbance torque (external, like J^T f), N m.
   const Vector7& torque() const { return estimate_; }
-  const DisturbanceSettings& settings() const { return settings_; }
 
  private:
-  DisturbanceSettings settings_;
+  double period_;
+  double alpha_;   ///< filter gain per update
   Vector7 limit_;
   Vector7 estimate_ = Vector7::Zero();
   Vector7 qd_prev_ = Vector7::Zero();

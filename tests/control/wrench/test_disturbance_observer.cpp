@@ -43,7 +43,7 @@ void observeUnderGravityCompensation(Plant& plant, DisturbanceObserver& obs, int
   Vector7 tau = Vector7::Zero();
   for (int k = 0; k < steps; ++k) {
     computeAll(panda(), model_data, plant.q, plant.v);
-    obs.update(model_data, plant.v, tau, kDt);
+    obs.update(model_data, plant.v, tau);
     tau = model_data.h;
     plant.step(tau);
   }
@@ -56,7 +56,7 @@ TEST(DisturbanceObserver, RecoversATorqueTheModelDoesNotKnow) {
   plant.disturbance << 0.0, 0.5, 0.0, -0.3, 0.05, -0.2, 0.08;
   DisturbanceSettings s;
   s.max_torque_fraction = 1.0;
-  DisturbanceObserver obs(s, panda().tau_max);
+  DisturbanceObserver obs(s, panda().tau_max, kDt);
   observeUnderGravityCompensation(plant, obs, 300);
   // within 1 % of its size: the observer evaluates M and h at the period's
   // end, the plant moved under them (the arm falls freely along d)
@@ -71,7 +71,7 @@ TEST(DisturbanceObserver, HoldsAtMostItsShareOfTheTorqueLimits) {
   plant.disturbance << 30.0, 0.0, 0.0, 0.0, 0.0, 0.0, -5.0;
   DisturbanceSettings s;
   s.max_torque_fraction = 0.1;
-  DisturbanceObserver obs(s, panda().tau_max);
+  DisturbanceObserver obs(s, panda().tau_max, kDt);
   observeUnderGravityCompensation(plant, obs, 200);
   EXPECT_NEAR(obs.torque()[0], 0.1 * panda().tau_max[0], 1e-9);
   EXPECT_NEAR(obs.torque()[6], -0.1 * panda().tau_max[6], 1e-9);
@@ -79,7 +79,7 @@ TEST(DisturbanceObserver, HoldsAtMostItsShareOfTheTorqueLimits) {
 
 /// A posture move while carrying: the controller's payload sits 2 cm from
 /// where the plant's does. Returns joint 7's distance to the goal after 6 s.
-double carryError(double gain) {
+double carryError(double gain, bool compensation = true) {
   const Vector7 goal = (Vector7() << 0.0, -0.3, -0.3, -2.29, 1.61, 1.75, 1.82).finished();
   Payload truth;
   truth.mass = 0.8;
@@ -89,6 +89,7 @@ double carryError(double gain) {
   Plant plant(kReady);
   setPayload(panda(), plant.data, truth);
   ControllerConfig cfg = loadControllerConfig(defaultControllerConfigPath());
+  if (!compensation) cfg.disturbance.compensation = DisturbanceSettings::Compensation::kOff;
   Controller ctl(panda(), cfg);
   ControlInputs in;
   in.q = plant.q;
@@ -112,6 +113,7 @@ TEST(DisturbanceObserver, FedBackAPostureMoveReachesItsGoalDespiteAMisplacedPayl
   const double with = carryError(1.0);
   EXPECT_GT(without, 0.1);  // the weak wrist spring stops short
   EXPECT_LT(with, 0.01);
+  EXPECT_NEAR(carryError(1.0, false), without, 1e-9);  // compensation off: the gain is ignored
 }
 
 }  // namespace
