@@ -83,7 +83,7 @@ TEST(GraspFunnel, StandoffShrinksLinearlyAsTheFitGrows) {
 TEST(GraspFunnel, TurnAcrossTheClosingAxisWidensByTheFingerSpan) {
   const Vector3 p(0.5, 0.0, 0.3);
   const double turn = 0.1;  // rad
-  for (const Vector3 axis : {Vector3(Vector3::UnitX()), Vector3(Vector3::UnitZ())}) {  // TCP frame: across and along the fingers
+  for (const Vector3& axis : {Vector3(Vector3::UnitX()), Vector3(Vector3::UnitZ())}) {  // TCP frame: across and along the fingers
     Isometry tcp = sideGrasp(p);
     tcp.linear() = tcp.linear() * Eigen::AngleAxisd(turn, axis).toRotationMatrix();
     const FingerFit f = fingerFit(tcp, at(p), sideGrasp(p), cylinder(0.03, 0.2), kOpening, kSpan);
