@@ -52,6 +52,7 @@ const char* kindName(control::CollisionBodyKind k) {
     case control::CollisionBodyKind::kHumanHand: return "the person's hand";
     case control::CollisionBodyKind::kHumanForearm: return "the person's forearm";
     case control::CollisionBodyKind::kHumanUpperArm: return "the person's upper arm";
+    case control::CollisionBodyKind::kObject: return "the object the person holds out";
   }
   return "?";
 }
