@@ -129,7 +129,7 @@ const Vector7& Controller::step(const ControlInputs& in) {
   // compute once, then tasks and constraints only read
   computeAll(model_, data_, in.q, in.qd);
   frameJacobian(model_, data_, ft_id_, J_ft_);
-  disturbance_.update(data_, in.qd, tau_);  // tau_: what the last period applied
+  disturbance_.update(data_, in.qd, tau_, disturbance_learn_);  // tau_: what the last period applied
   tau_external_.noalias() = (1.0 - disturbance_gain_) * J_ft_.transpose() * external_wrench_;
   if (disturbance_gain_ > 0.0) tau_external_ += disturbance_gain_ * disturbance_.torque();
   const ControlContext ctx = context(in.time);
@@ -225,9 +225,13 @@ void Controller::setExternalWrench(const Vector6& wrench) {
   if (wrench.allFinite()) external_wrench_ = wrench;
 }
 
-void Controller::setDisturbanceGain(double g) {
+void Controller::setDisturbanceFeedback(double g, bool learn) {
+  disturbance_learn_ = learn;
   if (config_.disturbance.compensation == DisturbanceSettings::Compensation::kOff) g = 0.0;
-  if (std::isfinite(g)) disturbance_gain_ = std::clamp(g, 0.0, 1.0);
+  if (!std::isfinite(g)) return;
+  g = std::clamp(g, 0.0, 1.0);
+  if (disturbance_gain_ == 0.0 && g > 0.0) disturbance_.reset();
+  disturbance_gain_ = g;
 }
 
 Vector3 Controller::sensorAcceleration() const {

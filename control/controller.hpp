@@ -4,7 +4,7 @@
 //   chi = [qddot (7); alphadot_obs (6)] -> solve -> integrate the observed
 //   object with alphadot_obs -> tau = M qddot + h - J_ft^T f (payload included;
 //   f the known external wrench at the wrist sensor, setExternalWrench; while
-//   carrying, the observed joint disturbance instead, setDisturbanceGain).
+//   carrying, the observed joint disturbance instead, setDisturbanceFeedback).
 //
 // Tasks (names): "observation", "tracking", "posture", "pose" (disabled at
 // start). Keep "observation" on whenever "tracking" is on: the tracking rows
@@ -91,8 +91,11 @@ class Controller {
   /// dynamics hold instead of the external wrench, 0..1 (clamped; always 0
   /// with config disturbance.compensation off):
   /// tau = M qddot + h - ((1 - g) J_ft^T f + g d). The caller passes the
-  /// carry feed-forward's ramp (ContactWrenchEstimator::feedForwardGain). RT safe.
-  void setDisturbanceGain(double g);
+  /// carry's ramp (ContactWrenchEstimator::disturbanceGain). `learn`: the
+  /// observer updates its estimate (false holds it: a person may be touching).
+  /// A gain that rises from 0 starts a new carry: the observer starts afresh,
+  /// so a carry never inherits the last one's estimate. RT safe.
+  void setDisturbanceFeedback(double gain, bool learn);
   /// Linear acceleration of the "ft_sensor" origin (world, m/s^2) the last
   /// step commanded: J qddot + Jdot qdot at its state.
   Vector3 sensorAcceleration() const;
@@ -158,6 +161,7 @@ class Controller {
   Vector7 tau_external_ = Vector7::Zero();
   DisturbanceObserver disturbance_;
   double disturbance_gain_ = 0.0;
+  bool disturbance_learn_ = true;
   Matrix6x7 J_ft_ = Matrix6x7::Zero();
 
   std::shared_ptr<ObservationTask> observation_;

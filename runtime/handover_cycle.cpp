@@ -146,8 +146,9 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   contact_.update(cw);
   controller_.setPayload(contact_.payload());
   controller_.setExternalWrench(contact_.feedForward());
-  // while carrying alone, the joint torque the model misses replaces the wrench (disturbance_observer.hpp)
-  controller_.setDisturbanceGain(contact_.feedForwardGain());
+  // while carrying alone, the joint torque the model misses replaces the wrench; learnt only
+  // then, held while a person may touch (disturbance_observer.hpp)
+  controller_.setDisturbanceFeedback(contact_.disturbanceGain(), cw.carried_alone);
 
   // 7. the QP
   control_in_.time = t;

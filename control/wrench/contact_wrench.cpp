@@ -42,6 +42,7 @@ void ContactWrenchEstimator::start(const Payload& object, bool holds) {
   payload_.inertia_com = share_ * object_.inertia_com;
   feed_forward_.setZero();
   ff_gain_ = 0.0;
+  disturbance_gain_ = 0.0;
 }
 
 void ContactWrenchEstimator::update(const ContactWrenchInput& in) {
@@ -86,6 +87,7 @@ void ContactWrenchEstimator::update(const ContactWrenchInput& in) {
                       (settings_.feed_forward == Mode::kAlways ||
                        (settings_.feed_forward == Mode::kCarry && in.carried_alone));
   ff_gain_ = std::clamp(ff_gain_ + (wanted ? ff_step_ : -ff_step_), 0.0, 1.0);
+  disturbance_gain_ = std::clamp(disturbance_gain_ + (in.carried_alone ? ff_step_ : -ff_step_), 0.0, 1.0);
   if (ff_gain_ == 0.0) {
     feed_forward_.setZero();
     return;

@@ -93,8 +93,13 @@ class ContactWrenchEstimator {
   /// off and until the offset is calibrated.
   const Vector6& feedForward() const { return feed_forward_; }
   /// 0..1: the feed-forward's ramp (1 while the robot alone carries the
-  /// object in mode carry), also the gate of the joint disturbance's feedback.
+  /// object in mode carry, once the sensor is calibrated).
   double feedForwardGain() const { return ff_gain_; }
+  /// 0..1: the joint disturbance feedback's ramp (1 while the robot alone
+  /// carries the object; Controller::setDisturbanceFeedback). It needs no
+  /// sensor calibration: a give starts moving at once, before the arm ever
+  /// rests long enough to calibrate, and its wrist needs the feedback most.
+  double disturbanceGain() const { return disturbance_gain_; }
   bool calibrated() const { return calibrator_.done(); }
   const FtBiasCalibrator& calibrator() const { return calibrator_; }
   const ContactWrenchSettings& settings() const { return settings_; }
@@ -118,6 +123,7 @@ class ContactWrenchEstimator {
   Payload payload_;
   Vector6 feed_forward_ = Vector6::Zero();
   double ff_gain_ = 0.0;      ///< 0..1, the feed-forward's ramp
+  double disturbance_gain_ = 0.0;  ///< 0..1, the disturbance feedback's ramp
   double ff_step_ = 1.0;      ///< gain change per update (period / ramp_time)
 };
 

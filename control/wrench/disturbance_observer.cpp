@@ -15,7 +15,7 @@ void DisturbanceObserver::reset() {
   have_prev_ = false;
 }
 
-void DisturbanceObserver::update(const Data& data, const Vector7& qd, const Vector7& tau_applied) {
+void DisturbanceObserver::update(const Data& data, const Vector7& qd, const Vector7& tau_applied, bool learn) {
   if (!qd.allFinite() || !tau_applied.allFinite()) return;
   if (!have_prev_) {
     qd_prev_ = qd;
@@ -24,6 +24,7 @@ void DisturbanceObserver::update(const Data& data, const Vector7& qd, const Vect
   }
   const Vector7 qdd = (qd - qd_prev_) / period_;
   qd_prev_ = qd;
+  if (!learn) return;
   Vector7 d = data.M * qdd;
   d += data.h - tau_applied;
   if (!d.allFinite()) return;

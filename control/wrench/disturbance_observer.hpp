@@ -7,9 +7,11 @@
 // low-pass filtered (filter_tau) and clipped per joint to max_torque_fraction
 // of its torque limit. It holds what the model gets wrong - where the held
 // object's mass really sits in the grip, joint friction and damping - and any
-// outside push on the arm. That is why the controller feeds it back only
-// while the robot alone carries the object (Controller::
-// setDisturbanceGain): the acceleration-level PD of a wrist joint is a weak
+// outside push on the arm. That is why the controller learns it and feeds it
+// back only while the robot alone carries the object; while a person may
+// touch the gripper or the object the estimate is held and its feedback
+// fades (Controller::setDisturbanceFeedback). Why feed it back at all: the
+// acceleration-level PD of a wrist joint is a weak
 // spring (posture K = 10 / s^2 times joint 7's inertia 0.013 kg m^2 is
 // 0.13 N m/rad), and 0.08 N m the model missed held joint 7 0.8 rad short of
 // the carry's goal configuration for ever.
@@ -43,8 +45,10 @@ class DisturbanceObserver {
   void reset();
   /// One period. `data`: computeAll at this period's (q, qdot); `tau_applied`:
   /// the torque commanded over the last period. The first call only stores
-  /// qdot. Non-finite input keeps the last estimate. RT safe.
-  void update(const Data& data, const Vector7& qd, const Vector7& tau_applied);
+  /// qdot. `learn` false holds the estimate (a person may be touching the
+  /// arm or what it holds: their push is no model error). Non-finite input
+  /// keeps the last estimate. RT safe.
+  void update(const Data& data, const Vector7& qd, const Vector7& tau_applied, bool learn = true);
 
   /// The filtered, clipped disturbance torque (external, like J^T f), N m.
   const Vector7& torque() const { return estimate_; }

@@ -124,6 +124,30 @@ TEST(ContactWrench, CarryModeFeedsForwardOnlyWhatTheRobotCarriesAloneAndRamps) {
   EXPECT_EQ(est.feedForward(), Vector6::Zero());
 }
 
+TEST(ContactWrench, DisturbanceFeedbackRampsWithTheCarryWithoutACalibration) {
+  // a give: the robot holds the object from the start and moves at once, so
+  // the sensor is never calibrated; the wrench is not fed forward, but the
+  // joint disturbance feedback (which needs no sensor) follows the carry
+  Fixture f;
+  ContactWrenchSettings s;
+  s.feed_forward = ContactWrenchSettings::FeedForward::kCarry;
+  s.ramp_time = 0.2;
+  ContactWrenchEstimator est(f.model, s, kDt);
+  est.start(f.object, true);
+  f.run(est, f.reading(1.0), true, 100, false, true);
+  ASSERT_FALSE(est.calibrated());
+  EXPECT_NEAR(est.disturbanceGain(), 0.5, 1e-9);
+  f.run(est, f.reading(1.0), true, 200, false, true);
+  EXPECT_EQ(est.disturbanceGain(), 1.0);
+  EXPECT_EQ(est.feedForwardGain(), 0.0);
+  EXPECT_EQ(est.feedForward(), Vector6::Zero());
+  // a person's hand comes to the gripper: it fades out over ramp_time
+  f.run(est, f.reading(1.0), true, 100, false, false);
+  EXPECT_NEAR(est.disturbanceGain(), 0.5, 1e-9);
+  f.run(est, f.reading(1.0), true, 100, false, false);
+  EXPECT_EQ(est.disturbanceGain(), 0.0);
+}
+
 TEST(ContactWrench, NonFiniteReadingsKeepTheEstimate) {
   Fixture f;
   ContactWrenchEstimator est(f.model, ContactWrenchSettings{}, kDt);

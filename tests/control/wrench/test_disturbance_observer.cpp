@@ -66,6 +66,30 @@ TEST(DisturbanceObserver, RecoversATorqueTheModelDoesNotKnow) {
   EXPECT_TRUE(obs.torque().isZero());
 }
 
+TEST(DisturbanceObserver, HoldsItsEstimateWhileNotLearning) {
+  // a person may be touching: what the observer then sees is their push,
+  // so the estimate stays what it was
+  Plant plant(kReady);
+  plant.disturbance << 0.0, 0.5, 0.0, -0.3, 0.05, -0.2, 0.08;
+  DisturbanceSettings s;
+  s.max_torque_fraction = 1.0;
+  DisturbanceObserver obs(s, panda().tau_max, kDt);
+  observeUnderGravityCompensation(plant, obs, 300);
+  const Vector7 learnt = obs.torque();
+  plant.disturbance *= 3.0;
+  Data model_data(panda());
+  computeAll(panda(), model_data, plant.q, plant.v);
+  for (int k = 0; k < 100; ++k) {
+    plant.step(model_data.h);
+    computeAll(panda(), model_data, plant.q, plant.v);
+    obs.update(model_data, plant.v, model_data.h, false);
+  }
+  EXPECT_EQ(obs.torque(), learnt);
+  // learning again, it moves to the new disturbance
+  observeUnderGravityCompensation(plant, obs, 300);
+  EXPECT_GT((obs.torque() - learnt).norm(), 0.5 * (2.0 * learnt).norm());
+}
+
 TEST(DisturbanceObserver, HoldsAtMostItsShareOfTheTorqueLimits) {
   Plant plant(kReady);
   plant.disturbance << 30.0, 0.0, 0.0, 0.0, 0.0, 0.0, -5.0;
@@ -97,7 +121,7 @@ double carryError(double gain, bool compensation = true) {
   ctl.setTaskEnabled("tracking", false);
   ctl.setPayload(believed);
   ctl.setPostureTarget(goal);
-  ctl.setDisturbanceGain(gain);
+  ctl.setDisturbanceFeedback(gain, true);
   for (int k = 0; k < 6000; ++k) {
     in.time = k * kDt;
     in.q = plant.q;
