@@ -2,6 +2,7 @@
 // Jacobians, mass matrix, bias forces and the payload, at random states.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <random>
 #include <vector>
@@ -275,6 +276,37 @@ TEST_F(ModelVsMujoco, CapsulesMatchTheSimulatorsCapsules) {
     ++compared;
   }
   EXPECT_EQ(compared, 9);
+}
+
+/// Distance (m) from point p to the segment [a, b].
+double pointSegmentDistance(const Vector3& p, const Vector3& a, const Vector3& b) {
+  const Vector3 ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  return (p - (a + t * ab)).norm();
+}
+
+TEST_F(ModelVsMujoco, TheSimulatorsPalmLiesInsideTheControllersHandCapsule) {
+  // the simulator's palm is thinner than the published capsule, never longer:
+  // the controller keeps the person at a distance from its own capsule, so a
+  // palm that reached past it touched a person's hand the controller believed
+  // 3-6 mm away. A capsule lies inside another when both ends of its segment
+  // are at least its radius inside (the distance to a segment is convex).
+  Vector7 q, v;
+  sample(q, v);
+  mj.set(model, q, v);
+  forwardKinematics(model, data, q, v);
+  const int g = mj.id(mjOBJ_GEOM, "panda_hand_col_a");
+  ASSERT_EQ(mj.m->geom_type[g], mjGEOM_CAPSULE);
+  const Isometry X = MujocoOracle::pose(mj.d->geom_xpos + 3 * g, mj.d->geom_xmat + 9 * g);
+  const double half = mj.m->geom_size[3 * g + 1], radius = mj.m->geom_size[3 * g];
+  const auto it = std::find_if(model.capsules.begin(), model.capsules.end(),
+                               [](const Capsule& c) { return c.name == "hand_a"; });
+  ASSERT_NE(it, model.capsules.end());
+  const Vector3 a = data.oMb[it->body] * it->a, b = data.oMb[it->body] * it->b;
+  for (const double end : {-half, half}) {
+    const double d = pointSegmentDistance(X * Vector3(0, 0, end), a, b);
+    EXPECT_LE(d + radius, it->radius + 1e-9) << "palm end at " << end;
+  }
 }
 
 }  // namespace
