@@ -87,6 +87,7 @@ void Retreat::configure(const YamlReader& def) {
   open_ = def.child("gripper").asEnum({"keep", "open"}) == "open";
   pos_tol_ = readPositive(def, "position_tolerance", 0.5);
   settle_speed_ = readPositive(def, "settle_speed", 1.0);
+  if (def.optionalChild("max_time")) max_time_ = readPositive(def, "max_time", 60.0);
 }
 
 void Retreat::onStart(HandoverContext& ctx) {
@@ -100,10 +101,12 @@ void Retreat::onStart(HandoverContext& ctx) {
 
 bool Retreat::onRun(HandoverContext& ctx) {
   carry_.update(ctx, ctrl());
-  if (carry_.waiting() || positionError(ctx.in.tcp_pose, carry_.goal()) > pos_tol_ ||
-      ctx.in.tcp_velocity.head<3>().norm() > settle_speed_) {
-    return false;
-  }
+  // a retreat blocked short of its pose (a person in the way, a pose the
+  // wrist cannot reach) ends as one that got there: held at a joint limit
+  // for 9-14 s, the arm had retreated as far as it could long before
+  const bool settled = !carry_.waiting() && positionError(ctx.in.tcp_pose, carry_.goal()) <= pos_tol_ &&
+                       ctx.in.tcp_velocity.head<3>().norm() <= settle_speed_;
+  if (!settled && elapsed(ctx) < max_time_) return false;
   if (ctx.stats.retries < ctx.params->max_retries) {
     ++ctx.stats.retries;
     setOutput(retry_);

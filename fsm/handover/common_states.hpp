@@ -53,7 +53,9 @@ class Retract : public HandoverState {
 /// [Retry, GiveUp] After an abort: counts it, goes to the safe pose, then
 /// retries while params.max_retries allows. Keys: gripper: keep | open
 /// (keep never drops a held object; open lets the person keep theirs),
-/// position_tolerance (m), settle_speed (m/s).
+/// position_tolerance (m), settle_speed (m/s), max_time (s: a retreat still
+/// short of its pose then - blocked by a person or a joint limit - ends as
+/// one that got there).
 class Retreat : public HandoverState {
  public:
   Retreat();
@@ -66,6 +68,7 @@ class Retreat : public HandoverState {
   int retry_, give_up_;
   bool open_ = false;
   double pos_tol_ = 0.03, settle_speed_ = 0.03;
+  double max_time_ = 5.0;  ///< s: a retreat still short of its pose then is as far back as it gets
   HeldObjectCarry carry_;  ///< the safe pose, or an upright placement of a held object near it
 };
 

@@ -122,6 +122,7 @@ struct World {
   bool dropout = false;     // perception sends nothing
   double last_sample = 0.0;
   bool hand_open = true;
+  bool arm_stuck = false;   // the arm cannot move (a joint at its limit, a person in the way)
   TrackingPlan object_plan;  // what a grasp planner would report (invalid: none)
   TrackingPlan hand_plan;
 
@@ -168,6 +169,7 @@ struct World {
     const Vector3 err = d.translation() - tcp.translation();
     Vector3 v = 5.0 * err * c.speed;
     if (v.norm() > 0.5) v = v.normalized() * 0.5;
+    if (arm_stuck) v.setZero();
     tcp_vel = v;
     tcp.translation() += v * kDt;
     tcp.linear() = d.linear();

@@ -163,6 +163,26 @@ TEST(HandoverR2H, WithdrawDuringApproachRetreatsHoldingTheObject) {
   EXPECT_EQ(rig.fsm->stats().retries, 1);
 }
 
+TEST(HandoverR2H, ARetreatBlockedShortOfItsPoseEndsAfterItsMaxTime) {
+  // the retreat pose out of reach (a joint at its limit, a person in the
+  // way): the retreat still ends, as one that got there, and the robot waits
+  // for the receiver again instead of holding the arm where it is for ever
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0));
+  rig.world.moveHand(kReceive, 0.5);
+  ASSERT_TRUE(rig.runUntilState("/Approach", 5.0));
+  rig.world.moveHand(kAway, 0.8);
+  ASSERT_TRUE(rig.runUntilState("Retreat", 3.0));
+  rig.world.arm_stuck = true;
+  const double started = rig.world.time;
+  ASSERT_TRUE(rig.runUntilState("WaitAgain", 10.0)) << rig.fsm->activePath();
+  const double took = rig.world.time - started;
+  EXPECT_GT(took, 4.5);  // config/fsm.yaml: Retreat max_time 5 s
+  EXPECT_LT(took, 5.5);
+  EXPECT_TRUE(rig.world.robot_grip);  // a give keeps holding the object
+  EXPECT_EQ(rig.fsm->stats().retries, 1);
+}
+
 TEST(HandoverR2H, WithdrawWhilePresentingRetreats) {
   Rig rig(true);
   ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0));
