@@ -16,12 +16,22 @@ cg::GraspSelectionConfig presentationSelectionConfig(cg::GraspSelectionConfig co
 }
 
 namespace {
-std::vector<cg::GraspSpec> presentationSpecs(const control::Isometry& presentation) {
-  cg::GraspSpec s;
-  s.placement = presentation;
-  s.has_free_axis = true;  // any turn about the hand's vertical
-  s.free_axis = control::Vector3::UnitZ();
-  return {s};
+std::vector<cg::GraspSpec> presentationSpecs(const control::Isometry& presentation, const control::Vector3& pivot,
+                                             const cg::GraspSelectionConfig& config) {
+  cg::GraspSpec upright;
+  upright.placement = presentation;
+  upright.has_free_axis = true;  // any turn about the hand's vertical
+  upright.free_axis = control::Vector3::UnitZ();
+  if (!(config.presentation_tilt > 0.0)) return {upright};
+  upright.preference = config.declared_preference;
+  // tilted about the hand's x axis through the object's centre; the free turn
+  // about the vertical sweeps the tilt through every direction
+  cg::GraspSpec tilted = upright;
+  tilted.preference = 0.0;
+  tilted.placement = Eigen::Translation3d(pivot) *
+                     Eigen::AngleAxisd(config.presentation_tilt, control::Vector3::UnitX()) *
+                     Eigen::Translation3d(-pivot) * presentation;
+  return {upright, tilted};
 }
 }  // namespace
 
@@ -29,7 +39,8 @@ GraspPlanning::GraspPlanning(const control::Model& model, const GraspPlanningSet
     : model_(model),
       settings_(settings),
       object_(model, settings.object_grasps, settings.config),
-      hand_(model, presentationSpecs(settings.presentation), presentationSelectionConfig(settings.config)) {}
+      hand_(model, presentationSpecs(settings.presentation, settings.presentation_pivot, settings.config),
+            presentationSelectionConfig(settings.config)) {}
 
 void GraspPlanning::reset() {
   object_.reset();

@@ -10,8 +10,10 @@
 // avoiding the person's forearm and upper arm.
 // Give: while the robot holds the object, each new hand sample re-selects the
 // presentation: the declared TCP-in-hand frame turned about the hand's z axis
-// (the receiver takes the object at any turn about the vertical), no twins
-// (the held object would turn with the gripper).
+// (the receiver takes the object at any turn about the vertical), upright or
+// tilted by config.presentation_tilt in any direction (upright preferred by
+// config.declared_preference), no twins (the held object would turn with the
+// gripper).
 //
 // Frames: world; offsets in the observed frame (object or hand). Units: m, rad.
 // Real-time: the constructor allocates; update() and uprightPlacement() do
@@ -32,6 +34,7 @@ struct GraspPlanningSettings {
   control::grasp::GraspSelectionConfig config;        ///< config/grasp_selection.yaml
   std::vector<control::grasp::GraspSpec> object_grasps;  ///< what the object admits (at least one)
   control::Isometry presentation = control::Isometry::Identity();  ///< declared TCP pose in the receiver's hand frame
+  control::Vector3 presentation_pivot = control::Vector3::Zero();   ///< m, the object's centre there (the tilt's pivot)
   double forearm_length = 0.27, upper_arm_length = 0.33;  ///< m, the person's arm capsules
   double forearm_radius = 0.045, upper_arm_radius = 0.055;  ///< m
   double hand_radius = 0.05;  ///< m, a sphere around the grip point (take: grasp away from the hand)

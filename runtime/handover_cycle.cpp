@@ -54,6 +54,7 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
     ps.config = settings.grasp_selection;
     ps.object_grasps = settings.object_grasps;
     ps.presentation = machine_->context().presentation.offset;
+    ps.presentation_pivot = machine_->params().object_in_hand.translation();
     ps.forearm_length = settings.forearm_length;
     ps.upper_arm_length = settings.upper_arm_length;
     ps.forearm_radius = settings.collision.person.forearm_radius;

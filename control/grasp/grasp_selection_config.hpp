@@ -41,6 +41,13 @@ struct GraspSelectionConfig {
   /// seeds are tried regardless.
   int cold_solves_per_update = 2;
   UprightOptions upright;
+  /// rad: besides upright, a give may present the object tilted this far
+  /// (about a horizontal axis through its centre, in any direction): people
+  /// hand over and take objects tilted like this, and above a high or far
+  /// hand an upright object held from the top puts the wrist out of the
+  /// arm's reach. 0 = upright only. The upright presentation keeps
+  /// declared_preference.
+  double presentation_tilt = 30.0 * M_PI / 180.0;
 };
 
 /// Reads and validates a config file (see config/grasp_selection.yaml for every key).

@@ -5,6 +5,9 @@
 // object is placed upright.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "control/grasp/shape_grasps.hpp"
 #include "runtime/grasp_planning.hpp"
 #include "tests/control/grasp/panda_fixture.hpp"
@@ -142,6 +145,40 @@ TEST(GraspPlanning, APresentationIsPlannedWithoutAPreGraspBackedOffFromIt) {
   ASSERT_TRUE(planning.handPlan().valid);
   const control::Isometry tcp = tcpPose(panda(), planning.handPlan().q_target);
   EXPECT_LT((tcp.translation() - (e.human.hand * planning.handPlan().target_in_observed).translation()).norm(), 1e-3);
+}
+}  // namespace
+}  // namespace handover::runtime
+
+namespace handover::runtime {
+namespace {
+TEST(GraspPlanning, AHandBeyondAnUprightPresentationGetsATiltedOne) {
+  // a ball held from the top, a receiver's hand high and far: with the
+  // gripper pointing down the wrist is out of the arm's reach; tilted by up to
+  // presentation_tilt, the same ball reaches the same place in the hand
+  GraspPlanningSettings s = bottleSettings(false);
+  s.presentation = control::Isometry::Identity();
+  s.presentation.linear() = Eigen::AngleAxisd(M_PI, control::Vector3::UnitX()).toRotationMatrix();
+  s.presentation.translation() = control::Vector3(0.0, 0.0, 0.05);
+  s.presentation_pivot = control::Vector3(0.0, 0.0, 0.05);
+  const control::Vector3 hand(0.68, 0.0, 0.56);
+  perception::PerceptionEstimate e = offered(0.2, hand + control::Vector3(0.0, 0.0, 0.08));
+  e.object.holder = perception::ObjectHolder::Robot;
+
+  s.config.presentation_tilt = 0.0;
+  GraspPlanning upright_only(panda(), s);
+  upright_only.update(e, readyConfiguration(), true);
+  EXPECT_FALSE(upright_only.handPlan().valid);
+
+  s.config.presentation_tilt = 30.0 * M_PI / 180.0;
+  GraspPlanning tilting(panda(), s);
+  tilting.update(e, readyConfiguration(), true);
+  ASSERT_TRUE(tilting.handPlan().valid);
+  const control::Isometry tcp_in_hand = tilting.handPlan().target_in_observed;
+  EXPECT_LT((tcp_in_hand.translation() - s.presentation_pivot).norm(), 1e-9);  // the ball where it was
+  const double tilt = std::acos(std::clamp(-tcp_in_hand.linear().col(2).z(), -1.0, 1.0));
+  EXPECT_NEAR(tilt, s.config.presentation_tilt, 1e-9);
+  const control::Isometry tcp = tcpPose(panda(), tilting.handPlan().q_target);
+  EXPECT_LT((tcp.translation() - (e.human.hand * tcp_in_hand).translation()).norm(), 1e-3);
 }
 }  // namespace
 }  // namespace handover::runtime

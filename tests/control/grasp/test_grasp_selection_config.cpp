@@ -49,6 +49,7 @@ hysteresis: 0.3
 table: {height: 0.1, clearance: 0.05}
 cold_solves_per_update: 5
 upright: {yaw_step_deg: 20, tilt_tolerance_deg: 5, position_offsets: [[0, 0, 0], [0, 0, 0.1]]}
+presentation_tilt_deg: 20
 )");
   EXPECT_EQ(c.frame, "hand");
   EXPECT_EQ(c.ik.max_iterations, 12);
@@ -70,6 +71,7 @@ upright: {yaw_step_deg: 20, tilt_tolerance_deg: 5, position_offsets: [[0, 0, 0],
   EXPECT_NEAR(c.upright.tilt_tolerance, 5.0 * M_PI / 180.0, 1e-12);
   ASSERT_EQ(c.upright.position_offsets.size(), 2u);
   EXPECT_DOUBLE_EQ(c.upright.position_offsets[1].z(), 0.1);
+  EXPECT_NEAR(c.presentation_tilt, 20.0 * M_PI / 180.0, 1e-12);
 }
 
 TEST(GraspSelectionConfig, RejectsBadInputNamingFileAndKey) {
@@ -81,6 +83,7 @@ TEST(GraspSelectionConfig, RejectsBadInputNamingFileAndKey) {
   EXPECT_NE(errorOf("ik: {seeds: [[0, 0, 0]]}\n").find("ik.seeds"), std::string::npos);
   EXPECT_NE(errorOf("hysteresis: lots\n").find("hysteresis"), std::string::npos);
   EXPECT_NE(errorOf("upright: {position_offsets: []}\n").find("position_offsets"), std::string::npos);
+  EXPECT_NE(errorOf("presentation_tilt_deg: 90\n").find("presentation_tilt_deg"), std::string::npos);
 }
 
 }  // namespace
