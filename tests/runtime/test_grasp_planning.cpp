@@ -37,6 +37,16 @@ GraspPlanningSettings bottleSettings(bool with_shape_families) {
   return s;
 }
 
+/// Settings for a give whose object is held from the top: the TCP pointing
+/// down, `height` (m) above the receiver's grip point.
+GraspPlanningSettings topPresentation(double height) {
+  GraspPlanningSettings s = bottleSettings(false);
+  s.presentation = control::Isometry::Identity();
+  s.presentation.linear() = Eigen::AngleAxisd(M_PI, control::Vector3::UnitX()).toRotationMatrix();
+  s.presentation.translation() = control::Vector3(0.0, 0.0, height);
+  return s;
+}
+
 /// The person holds the bottle out in front of the robot.
 perception::PerceptionEstimate offered(double stamp, const control::Vector3& at) {
   perception::PerceptionEstimate e;
@@ -133,10 +143,7 @@ TEST(GraspPlanning, APresentationIsPlannedWithoutAPreGraspBackedOffFromIt) {
   // the object is brought straight to the hand (ApproachHand has no standoff):
   // a high hand, where the gripper pointing down reaches the presentation but
   // not a pose 8 cm above it, still gets a plan
-  GraspPlanningSettings s = bottleSettings(false);
-  s.presentation = control::Isometry::Identity();
-  s.presentation.linear() = Eigen::AngleAxisd(M_PI, control::Vector3::UnitX()).toRotationMatrix();
-  s.presentation.translation() = control::Vector3(0.0, 0.0, 0.08);
+  GraspPlanningSettings s = topPresentation(0.08);
   GraspPlanning planning(panda(), s);
   const control::Vector3 hand(0.65, 0.06, 0.45);
   perception::PerceptionEstimate e = offered(0.2, hand + control::Vector3(0.0, 0.0, 0.08));
@@ -155,10 +162,7 @@ TEST(GraspPlanning, AHandBeyondAnUprightPresentationGetsATiltedOne) {
   // a ball held from the top, a receiver's hand high and far: with the
   // gripper pointing down the wrist is out of the arm's reach; tilted by up to
   // presentation_tilt, the same ball reaches the same place in the hand
-  GraspPlanningSettings s = bottleSettings(false);
-  s.presentation = control::Isometry::Identity();
-  s.presentation.linear() = Eigen::AngleAxisd(M_PI, control::Vector3::UnitX()).toRotationMatrix();
-  s.presentation.translation() = control::Vector3(0.0, 0.0, 0.05);
+  GraspPlanningSettings s = topPresentation(0.05);
   s.presentation_pivot = control::Vector3(0.0, 0.0, 0.05);
   const control::Vector3 hand(0.68, 0.0, 0.56);
   perception::PerceptionEstimate e = offered(0.2, hand + control::Vector3(0.0, 0.0, 0.08));

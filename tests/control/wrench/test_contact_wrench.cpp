@@ -34,6 +34,15 @@ struct Fixture {
     w.head<3>() += R.transpose() * extra;
     return w;
   }
+  /// Mode carry, ramp 0.2 s, started holding the object.
+  ContactWrenchEstimator carryingEstimator() const {
+    ContactWrenchSettings s;
+    s.feed_forward = ContactWrenchSettings::FeedForward::kCarry;
+    s.ramp_time = 0.2;
+    ContactWrenchEstimator est(model, s, kDt);
+    est.start(object, true);
+    return est;
+  }
   void run(ContactWrenchEstimator& est, const Vector6& reading, bool closed, int cycles, bool at_rest = false,
            bool carried_alone = false) const {
     ContactWrenchInput in;
@@ -98,11 +107,7 @@ TEST(ContactWrench, FeedForwardIsWhatThePayloadDoesNotExplain) {
 
 TEST(ContactWrench, CarryModeFeedsForwardOnlyWhatTheRobotCarriesAloneAndRamps) {
   Fixture f;
-  ContactWrenchSettings s;
-  s.feed_forward = ContactWrenchSettings::FeedForward::kCarry;
-  s.ramp_time = 0.2;
-  ContactWrenchEstimator est(f.model, s, kDt);
-  est.start(f.object, true);
+  ContactWrenchEstimator est = f.carryingEstimator();
   f.run(est, f.reading(1.0), true, 300, true);
   ASSERT_TRUE(est.calibrated());
   // the object sits 3 cm off where the model puts it: a torque the payload does not explain
@@ -129,11 +134,7 @@ TEST(ContactWrench, DisturbanceFeedbackRampsWithTheCarryWithoutACalibration) {
   // the sensor is never calibrated; the wrench is not fed forward, but the
   // joint disturbance feedback (which needs no sensor) follows the carry
   Fixture f;
-  ContactWrenchSettings s;
-  s.feed_forward = ContactWrenchSettings::FeedForward::kCarry;
-  s.ramp_time = 0.2;
-  ContactWrenchEstimator est(f.model, s, kDt);
-  est.start(f.object, true);
+  ContactWrenchEstimator est = f.carryingEstimator();
   f.run(est, f.reading(1.0), true, 100, false, true);
   ASSERT_FALSE(est.calibrated());
   EXPECT_NEAR(est.disturbanceGain(), 0.5, 1e-9);

@@ -37,13 +37,13 @@ struct Plant {
 };
 
 /// Drives the plant with gravity compensation that does not know its
-/// disturbance, `steps` periods, the observer watching.
-void observeUnderGravityCompensation(Plant& plant, DisturbanceObserver& obs, int steps) {
+/// disturbance, `steps` periods, the observer watching (learning or not).
+void observeUnderGravityCompensation(Plant& plant, DisturbanceObserver& obs, int steps, bool learn = true) {
   Data model_data(panda());
   Vector7 tau = Vector7::Zero();
   for (int k = 0; k < steps; ++k) {
     computeAll(panda(), model_data, plant.q, plant.v);
-    obs.update(model_data, plant.v, tau);
+    obs.update(model_data, plant.v, tau, learn);
     tau = model_data.h;
     plant.step(tau);
   }
@@ -51,12 +51,23 @@ void observeUnderGravityCompensation(Plant& plant, DisturbanceObserver& obs, int
 
 const Vector7 kReady = (Vector7() << 0.0, -0.785398, 0.0, -2.356194, 0.0, 1.570796, 0.785398).finished();
 
-TEST(DisturbanceObserver, RecoversATorqueTheModelDoesNotKnow) {
+/// The ready arm with a torque on every joint that the model does not know.
+Plant disturbedPlant() {
   Plant plant(kReady);
   plant.disturbance << 0.0, 0.5, 0.0, -0.3, 0.05, -0.2, 0.08;
+  return plant;
+}
+
+/// An observer that may hold up to the whole torque limits.
+DisturbanceObserver unclippedObserver() {
   DisturbanceSettings s;
   s.max_torque_fraction = 1.0;
-  DisturbanceObserver obs(s, panda().tau_max, kDt);
+  return DisturbanceObserver(s, panda().tau_max, kDt);
+}
+
+TEST(DisturbanceObserver, RecoversATorqueTheModelDoesNotKnow) {
+  Plant plant = disturbedPlant();
+  DisturbanceObserver obs = unclippedObserver();
   observeUnderGravityCompensation(plant, obs, 300);
   // within 1 % of its size: the observer evaluates M and h at the period's
   // end, the plant moved under them (the arm falls freely along d)
@@ -69,21 +80,12 @@ TEST(DisturbanceObserver, RecoversATorqueTheModelDoesNotKnow) {
 TEST(DisturbanceObserver, HoldsItsEstimateWhileNotLearning) {
   // a person may be touching: what the observer then sees is their push,
   // so the estimate stays what it was
-  Plant plant(kReady);
-  plant.disturbance << 0.0, 0.5, 0.0, -0.3, 0.05, -0.2, 0.08;
-  DisturbanceSettings s;
-  s.max_torque_fraction = 1.0;
-  DisturbanceObserver obs(s, panda().tau_max, kDt);
+  Plant plant = disturbedPlant();
+  DisturbanceObserver obs = unclippedObserver();
   observeUnderGravityCompensation(plant, obs, 300);
   const Vector7 learnt = obs.torque();
   plant.disturbance *= 3.0;
-  Data model_data(panda());
-  computeAll(panda(), model_data, plant.q, plant.v);
-  for (int k = 0; k < 100; ++k) {
-    plant.step(model_data.h);
-    computeAll(panda(), model_data, plant.q, plant.v);
-    obs.update(model_data, plant.v, model_data.h, false);
-  }
+  observeUnderGravityCompensation(plant, obs, 100, false);
   EXPECT_EQ(obs.torque(), learnt);
   // learning again, it moves to the new disturbance
   observeUnderGravityCompensation(plant, obs, 300);

@@ -30,6 +30,15 @@ std::function<void(World&)> receiverWhoPulls(bool pulls) {
   };
 }
 
+/// The receiver comes, then leaves while the robot approaches: true once in Retreat.
+bool withdrawDuringApproach(Rig& rig) {
+  if (!rig.runUntilState("WaitForReceiver", 5.0)) return false;
+  rig.world.moveHand(kReceive, 0.5);
+  if (!rig.runUntilState("/Approach", 5.0)) return false;
+  rig.world.moveHand(kAway, 0.8);
+  return rig.runUntilState("Retreat", 3.0);
+}
+
 TEST(HandoverR2H, FingersBackOutAlongTheApproachAxisBeforeTurningAway) {
   Rig rig(true);
   ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
@@ -149,11 +158,7 @@ TEST(HandoverR2H, NoPullKeepsHoldingRetreatsAndRetries) {
 
 TEST(HandoverR2H, WithdrawDuringApproachRetreatsHoldingTheObject) {
   Rig rig(true);
-  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0));
-  rig.world.moveHand(kReceive, 0.5);
-  ASSERT_TRUE(rig.runUntilState("/Approach", 5.0));
-  rig.world.moveHand(kAway, 0.8);
-  ASSERT_TRUE(rig.runUntilState("Retreat", 3.0));
+  ASSERT_TRUE(withdrawDuringApproach(rig)) << rig.fsm->activePath();
   ASSERT_TRUE(rig.runUntilState("WaitAgain", 5.0));
   EXPECT_TRUE(rig.world.robot_grip);
   EXPECT_EQ(rig.ctl.count("gripper 0.08"), 0);
@@ -168,11 +173,7 @@ TEST(HandoverR2H, ARetreatBlockedShortOfItsPoseEndsAfterItsMaxTime) {
   // way): the retreat still ends, as one that got there, and the robot waits
   // for the receiver again instead of holding the arm where it is for ever
   Rig rig(true);
-  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0));
-  rig.world.moveHand(kReceive, 0.5);
-  ASSERT_TRUE(rig.runUntilState("/Approach", 5.0));
-  rig.world.moveHand(kAway, 0.8);
-  ASSERT_TRUE(rig.runUntilState("Retreat", 3.0));
+  ASSERT_TRUE(withdrawDuringApproach(rig)) << rig.fsm->activePath();
   rig.world.arm_stuck = true;
   const double started = rig.world.time;
   ASSERT_TRUE(rig.runUntilState("WaitAgain", 10.0)) << rig.fsm->activePath();
