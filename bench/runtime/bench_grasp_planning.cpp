@@ -1,0 +1,68 @@
+// Cost of planning a give's presentation (runtime/grasp_planning.hpp): one
+// update per new hand sample while the robot holds the object, the hand
+// swaying at 60 Hz in front of the robot. Arg: the presentation tilt in
+// degrees (0: upright only, 12 turns about the hand's vertical; 30, as
+// shipped: the upright and the tilted presentation, 24 candidates). Runs at
+// the sensor rate, outside the 1 ms control step (HandoverCycle::plan).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <string>
+
+#include "control/grasp/grasp_selection_config.hpp"
+#include "runtime/grasp_planning.hpp"
+
+namespace {
+
+using namespace handover;
+
+const control::Model& pandaModel() {
+  static const control::Model model = control::loadModel(std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf");
+  return model;
+}
+
+perception::PerceptionEstimate handSample(int k) {
+  const double t = k / 60.0;
+  perception::PerceptionEstimate e;
+  e.time = t;
+  e.human.valid = true;
+  e.human.stale = false;
+  e.human.stamp = t;
+  e.human.hand.translation() =
+      control::Vector3(0.62 + 0.03 * std::sin(1.3 * t), 0.10 * std::sin(0.9 * t), 0.40 + 0.03 * std::sin(2.1 * t));
+  e.human.forearm.translation() = e.human.hand.translation() + control::Vector3(0.25, 0.0, -0.10);
+  e.human.upper_arm.translation() = e.human.hand.translation() + control::Vector3(0.35, 0.0, 0.20);
+  e.object.valid = true;
+  e.object.stale = false;
+  e.object.holder = perception::ObjectHolder::Robot;
+  return e;
+}
+
+void BM_PresentationPlanning(benchmark::State& state) {
+  runtime::GraspPlanningSettings s;
+  s.config = control::grasp::loadGraspSelectionConfig(std::string(HANDOVER_SOURCE_DIR) + "/config/grasp_selection.yaml");
+  s.config.presentation_tilt = state.range(0) * M_PI / 180.0;
+  control::grasp::GraspSpec top;  // a bottle held from the top, presented 5 cm above the grip point
+  top.placement.linear() = Eigen::AngleAxisd(M_PI, control::Vector3::UnitX()).toRotationMatrix();
+  s.object_grasps.push_back(top);
+  s.presentation = control::Isometry::Identity();
+  s.presentation.linear() = top.placement.linear();
+  s.presentation.translation() = control::Vector3(0.0, 0.0, 0.13);
+  s.presentation_pivot = control::Vector3(0.0, 0.0, 0.05);
+  runtime::GraspPlanning planning(pandaModel(), s);
+  control::Vector7 q;
+  q << 0.0, -0.785398, 0.0, -2.356194, 0.0, 1.570796, 0.785398;
+  int k = 0;
+  planning.update(handSample(k++), q, true);  // the cold first update is not measured
+  long planned = 0, updates = 0;
+  for (auto _ : state) {
+    planning.update(handSample(k++), q, true);
+    planned += planning.handPlan().valid;
+    ++updates;
+    benchmark::DoNotOptimize(planning.handPlan().q_target.data());
+  }
+  state.counters["planned"] = static_cast<double>(planned) / static_cast<double>(updates);
+}
+BENCHMARK(BM_PresentationPlanning)->Arg(0)->Arg(30)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
