@@ -57,7 +57,9 @@ std::optional<YamlReader> section(const YamlReader& root, const char* key) {
 
 }  // namespace
 
-ControllerConfig parseControllerConfig(const YamlReader& root) {
+ControllerConfig parseControllerConfig(const YamlReader& root) { return parseControllerConfig(root, defaultJointLimits()); }
+
+ControllerConfig parseControllerConfig(const YamlReader& root, const JointLimits& joints) {
   ControllerConfig cfg;
   if (root.isNull()) return cfg;  // empty file: all defaults
   if (!root.isMap()) root.fail("expected a map of controller settings");
@@ -128,7 +130,7 @@ ControllerConfig parseControllerConfig(const YamlReader& root) {
     s->finish();
   }
   root.finish();
-  checkControllerBounds(cfg, root);
+  checkControllerBounds(cfg, root, joints);
   return cfg;
 }
 

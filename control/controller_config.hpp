@@ -8,6 +8,7 @@
 
 #include "config/yaml_reader.hpp"
 #include "control/constraints/joint_position_limit.hpp"
+#include "control/model/joint_limits.hpp"
 #include "control/tasks/pd_gains.hpp"
 #include "control/wrench/contact_wrench.hpp"
 #include "control/wrench/disturbance_observer.hpp"
@@ -79,7 +80,10 @@ struct ControllerConfig {
 /// InputError naming the file, the dotted key and the line.
 ControllerConfig loadControllerConfig(const std::string& path);
 /// Same, from an already parsed document (e.g. after scenario overrides).
+/// The posture target is checked against the default robot description's
+/// joint limits (config/robot.yaml's URDF), or against `joints`.
 ControllerConfig parseControllerConfig(const YamlReader& root);
+ControllerConfig parseControllerConfig(const YamlReader& root, const JointLimits& joints);
 /// The default file: HANDOVER_SOURCE_DIR/config/controller.yaml.
 std::string defaultControllerConfigPath();
 

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "control/datasheet_joint_limits.hpp"
 
 namespace handover::control {
 
@@ -74,7 +73,7 @@ std::string pdGainsProblem(double k, double d, double dt) {
   return "";
 }
 
-void checkControllerBounds(const ControllerConfig& cfg, const YamlReader& root) {
+void checkControllerBounds(const ControllerConfig& cfg, const YamlReader& root, const JointLimits& joints) {
   const double dt = cfg.period;
   auto gains = [&](const char* key, const PdGains& g) {
     const std::string p = pdGainsProblem(g.stiffness, g.damping, dt);
@@ -114,8 +113,8 @@ void checkControllerBounds(const ControllerConfig& cfg, const YamlReader& root) 
   // the posture target lies where the position damper lets the arm go
   const double safety = cfg.limits.position.safety;
   for (int i = 0; i < kArmDofs; ++i) {
-    const double range = kDatasheetQMax[i] - kDatasheetQMin[i];
-    const double lo = kDatasheetQMin[i] + safety * range, hi = kDatasheetQMax[i] - safety * range;
+    const double range = joints.q_max[i] - joints.q_min[i];
+    const double lo = joints.q_min[i] + safety * range, hi = joints.q_max[i] - safety * range;
     const double q = cfg.posture.target[i];
     if (!(q >= lo && q <= hi)) {
       failAt(root, "posture.target", "posture.target[" + std::to_string(i) + "] = " + num(q) + " rad is outside joint " +

@@ -1,12 +1,14 @@
 // Bounds on controller settings that keep the controller stable, beyond each
 // value's own range: PD gains against the control period, weights against the
-// QP's regularisation, the posture target inside the joint limits. Checked by
+// QP's regularisation, the posture target inside the joint limits (of the
+// robot description's model). Checked by
 // parseControllerConfig after reading; start-up only.
 #pragma once
 
 #include <string>
 
 #include "control/controller_config.hpp"
+#include "control/model/joint_limits.hpp"
 
 namespace handover::control {
 
@@ -26,7 +28,8 @@ constexpr double kMinRegularisationRatio = 1e-11;
 std::string pdGainsProblem(double stiffness, double damping, double dt);
 
 /// Throws InputError through `root` (file and line of the config) naming the
-/// first setting that breaks a bound.
-void checkControllerBounds(const ControllerConfig& cfg, const YamlReader& root);
+/// first setting that breaks a bound. `joints`: the robot's position limits
+/// (its description's model), which the posture target must respect.
+void checkControllerBounds(const ControllerConfig& cfg, const YamlReader& root, const JointLimits& joints);
 
 }  // namespace handover::control

@@ -45,6 +45,18 @@ bool matchesRobot(const std::string& pattern, const CollisionBody& b) {
   return b.isRobot() && (globMatch(pattern, b.link) || globMatch(pattern, b.name));
 }
 
+// a name of one of the robot description's link groups stands for its patterns
+std::vector<std::string> expandLinkGroups(const std::vector<std::string>& names, const Model& model) {
+  std::vector<std::string> out;
+  for (const std::string& n : names) {
+    const auto g = std::find_if(model.link_groups.begin(), model.link_groups.end(),
+                                [&](const LinkGroup& group) { return group.name == n; });
+    if (g == model.link_groups.end()) out.push_back(n);
+    else out.insert(out.end(), g->patterns.begin(), g->patterns.end());
+  }
+  return out;
+}
+
 }  // namespace
 
 CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cfg) {
@@ -111,7 +123,9 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
     cm.rule_scope.push_back(rule.scope);
 
     std::vector<int> robots, others;
-    for (const auto& pat : rule.robot) {
+    const std::vector<std::string> robot_side = expandLinkGroups(rule.robot, model);
+    const std::vector<std::string> other_side = expandLinkGroups(rule.other, model);
+    for (const auto& pat : robot_side) {
       bool any = false;
       for (int i = 0; i < num_robot; ++i) {
         if (matchesRobot(pat, cm.bodies[i])) {
@@ -126,7 +140,7 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
         if (!hasWildcard(pat)) ruleError(cfg, rule, "robot side '" + pat + "' matches no robot link or capsule");
       }
     }
-    for (const auto& pat : rule.other) {
+    for (const auto& pat : other_side) {
       bool any = false;
       for (int i = 0; i < static_cast<int>(cm.bodies.size()); ++i) {
         const CollisionBody& b = cm.bodies[i];

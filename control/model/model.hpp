@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "control/model/link_group.hpp"
 #include "control/types.hpp"
 
 namespace handover::control {
@@ -74,6 +75,9 @@ struct Model {
   double finger_max_opening = 0.08;  ///< m, total
   std::vector<Frame> frames;      ///< named frames (every link, "hand", "tcp", "ft_sensor", fingers)
   std::vector<Capsule> capsules;  ///< collision geometry
+  /// Named link groups of the robot description (config/robot.yaml
+  /// link_groups): what config/collision.yaml's rules name.
+  std::vector<LinkGroup> link_groups;
 
   /// Index into `frames`; throws std::out_of_range naming the frame if absent.
   int frameId(const std::string& name) const;

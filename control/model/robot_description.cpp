@@ -49,6 +49,16 @@ RobotDescription loadRobotDescription(const std::string& path) {
   d.gripper_links = names(gripper, "links");
   d.fingertip_capsules = names(gripper, "fingertip_capsules");
   gripper.finish();
+  const YamlReader groups = root.child("link_groups");
+  if (!groups.isMap()) groups.fail("expected a map of group names to lists of link names or patterns");
+  for (const std::string& name : groups.keys()) {
+    const YamlReader g = groups.child(name);
+    LinkGroup group{name, names(groups, name)};
+    if (group.patterns.empty()) g.fail("expected at least one link name or pattern");
+    for (std::size_t i = 0; i < group.patterns.size(); ++i)
+      if (group.patterns[i].empty()) g.at(i).fail("expected a non-empty name");
+    d.link_groups.push_back(std::move(group));
+  }
   root.finish();
   return d;
 }

@@ -11,6 +11,8 @@
 //   acceleration_limits  rad/s^2, joints in chain order (a URDF has none)
 //   gripper.links        links whose capsules are the gripper (hand, fingers)
 //   gripper.fingertip_capsules  gripper capsules that reach around the object
+//   link_groups          named groups of links ("arm", "gripper", "wrist", ...)
+//                        that config/collision.yaml's pair rules name
 //
 // The DoF is fixed at compile time (kArmDofs = 7): another 7-DoF arm is a
 // description change; a different DoF is not. Start-up only (reads a file,
@@ -20,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "control/model/link_group.hpp"
 #include "control/types.hpp"
 
 namespace handover::control {
@@ -35,6 +38,7 @@ struct RobotDescription {
   Vector7 acceleration_limits = Vector7::Zero();  ///< rad/s^2
   std::vector<std::string> gripper_links;
   std::vector<std::string> fingertip_capsules;
+  std::vector<LinkGroup> link_groups;  ///< in file order
 };
 
 /// Reads a description with the strict YAML reader: every key required,

@@ -169,6 +169,20 @@ void assignCapsuleRoles(const std::string& path, const RobotDescription& d, Mode
   }
 }
 
+// The description's link groups; a name without wildcards must be a link or capsule.
+void assignLinkGroups(const std::string& path, const RobotDescription& d, Model& model) {
+  const std::string from = d.file.empty() ? std::string("the robot description") : d.file;
+  for (const LinkGroup& g : d.link_groups) {
+    for (const std::string& p : g.patterns) {
+      if (p.find_first_of("*?") != std::string::npos || model.hasFrame(p)) continue;
+      bool capsule = false;
+      for (const Capsule& c : model.capsules) capsule = capsule || c.name == p;
+      if (!capsule) fail(path, "no link or capsule '" + p + "' (link group '" + g.name + "' of " + from + ")");
+    }
+  }
+  model.link_groups = d.link_groups;
+}
+
 }  // namespace
 
 Model loadModel(const std::string& urdf_path) { return loadModel(urdf_path, Model{}.finger_opening); }
@@ -267,6 +281,7 @@ Model loadModel(const std::string& urdf_path, const RobotDescription& descriptio
   // the tool's mass properties in the sensor frame (the sensor sits above the hand link)
   model.tool = transformInertia(tool, model.frames[model.frameId("ft_sensor")].placement.inverse());
   assignCapsuleRoles(path, d, model);
+  assignLinkGroups(path, d, model);
   return model;
 }
 

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "config/yaml_reader.hpp"
-#include "control/datasheet_joint_limits.hpp"
+#include "control/model/joint_limits.hpp"
 #include "scenes/scenario/object_geometry.hpp"
 #include "scenes/scenario/scenario_bounds.hpp"
 #include "scenes/scenario/scenario_check.hpp"
@@ -201,11 +201,13 @@ void readRobot(const YamlReader& r, Scenario& s) {
   if (!r.isMap()) r.fail("expected a map");
   if (auto q = r.optionalChild("start_q")) {
     const Vector7 v = q->asVector(7);
-    // inside the joint limits less the position damper's default safety zone
-    // (1% of each range), which the controller never lets the arm enter
+    // inside the joint limits (the robot description's model) less the position
+    // damper's default safety zone (1% of each range), which the controller
+    // never lets the arm enter
+    const control::JointLimits& limits = control::defaultJointLimits();
     for (int i = 0; i < 7; ++i) {
-      const double margin = kStartQSafety * (control::kDatasheetQMax[i] - control::kDatasheetQMin[i]);
-      q->at(static_cast<std::size_t>(i)).checkRange(v[i], control::kDatasheetQMin[i] + margin, control::kDatasheetQMax[i] - margin);
+      const double margin = kStartQSafety * (limits.q_max[i] - limits.q_min[i]);
+      q->at(static_cast<std::size_t>(i)).checkRange(v[i], limits.q_min[i] + margin, limits.q_max[i] - margin);
     }
     s.robot.start_q = v;
     s.start_q_where = refOf(*q);

@@ -1,7 +1,7 @@
 // The module boundaries docs/architecture.md claims, checked on the sources:
 // control/, perception/ and fsm/ include nothing from scenes/, and no code
 // outside the robot description (the URDF and config/robot.yaml) names a
-// joint or link of the Panda ("panda_").
+// joint or link of the Panda ("panda_"), in code or in config/*.yaml.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -50,6 +50,20 @@ TEST(ModuleBoundaries, OnlyTheRobotDescriptionNamesPandaLinksAndJoints) {
     const auto hits = linesWith(folder, "panda_");
     EXPECT_TRUE(hits.empty()) << folder << " names the Panda's links or joints:" << join(hits);
   }
+}
+
+TEST(ModuleBoundaries, NoConfigFileButTheRobotDescriptionNamesPandaLinks) {
+  const fs::path root = fs::path(HANDOVER_SOURCE_DIR) / "config";
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(root)) {
+    if (entry.path().extension() != ".yaml" || entry.path().filename() == "robot.yaml") continue;
+    ++files;
+    std::ifstream in(entry.path());
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n)
+      EXPECT_EQ(line.find("panda_"), std::string::npos) << entry.path().string() << ":" << n << ": " << line;
+  }
+  EXPECT_GE(files, 5);  // collision, controller, fsm, grasp_selection, perception
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 #include "control/controller_config.hpp"
 #include "control/controller_config_bounds.hpp"
 #include "control/model/model.hpp"
-#include "control/datasheet_joint_limits.hpp"
+#include "control/model/joint_limits.hpp"
 
 using namespace handover;
 using namespace handover::control;
@@ -89,10 +89,23 @@ TEST(ControllerBounds, MeasuredFailuresAreRefusedWithTheirKey) {
   EXPECT_NE(loadError("fallback:\n  damping: 1000\nperiod: 0.002\n").find("fallback.damping"), std::string::npos);
 }
 
-TEST(ControllerBounds, JointLimitTableMatchesTheUrdf) {
-  const Model m = loadModel(std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf");
+TEST(ControllerBounds, JointLimitsComeFromTheRobotDescriptionsModel) {
+  const Model m = loadModel(defaultRobotDescription(), 0.08);
+  const JointLimits& d = defaultJointLimits();
   for (int i = 0; i < kArmDofs; ++i) {
-    EXPECT_DOUBLE_EQ(m.q_min[i], kDatasheetQMin[i]) << i;
-    EXPECT_DOUBLE_EQ(m.q_max[i], kDatasheetQMax[i]) << i;
+    EXPECT_EQ(d.q_min[i], m.q_min[i]) << i;
+    EXPECT_EQ(d.q_max[i], m.q_max[i]) << i;
+  }
+  // a robot whose joint 1 turns less refuses the posture target the Panda accepts
+  const YamlReader root = YamlReader::loadString("posture:\n  target: [2.5, -0.785, 0, -2.356, 0, 1.571, 0.785]\n", "narrow.yaml");
+  EXPECT_NO_THROW(parseControllerConfig(root));
+  JointLimits narrow = d;
+  narrow.q_min[0] = -2.0;
+  narrow.q_max[0] = 2.0;
+  try {
+    parseControllerConfig(root, narrow);
+    ADD_FAILURE() << "a posture target beyond the narrower limit was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("posture.target[0]"), std::string::npos) << e.what();
   }
 }
