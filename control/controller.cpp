@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "config/input_error.hpp"
 #include "control/qp/goldfarb_idnani.hpp"
 
 namespace handover::control {
@@ -20,6 +21,10 @@ FormulationCapacity controllerCapacity() {
 }  // namespace
 
 Controller::Controller(Model model, const ControllerConfig& config, std::unique_ptr<QpSolver> solver)
+    : Controller(std::move(model), config, ControllerRegistry::shipped(), nullptr, std::move(solver)) {}
+
+Controller::Controller(Model model, const ControllerConfig& config, const ControllerRegistry& registry,
+                       const CollisionConfig* collision, std::unique_ptr<QpSolver> solver)
     : model_(std::move(model)),
       data_(model_),
       config_(config),
@@ -36,33 +41,8 @@ Controller::Controller(Model model, const ControllerConfig& config, std::unique_
 
   tcp_id_ = model_.frameId(config_.frame);
   ft_id_ = model_.frameId("ft_sensor");
-  const auto& c = config_;
-  observation_ = std::make_shared<ObservationTask>("observation", c.observation.gains, c.observation.gains);
-  tracking_ = std::make_shared<TrajectoryTrackingTask>(model_, "tracking", c.frame, c.tracking.translation.gains,
-                                                       c.tracking.orientation.gains);
-  posture_ = std::make_shared<PostureTask>("posture", c.posture.gains, c.posture.target);
-  pose_ = std::make_shared<EndEffectorPoseTask>(model_, "pose", c.frame, c.pose_task.translation.gains,
-                                                c.pose_task.orientation.gains);
-
-  Vector6 w;
-  formulation_.addTask(observation_, c.observation.weight);
-  w << c.tracking.translation.weights, c.tracking.orientation.weights;
-  formulation_.addTask(tracking_, c.tracking.weight, w);
-  formulation_.addTask(posture_, c.posture.weight);
-  w << c.pose_task.translation.weights, c.pose_task.orientation.weights;
-  formulation_.addTask(pose_, c.pose_task.weight, w);
-  formulation_.setTaskEnabled("pose", false);
-  formulation_.setRegularisation(c.qp.regularisation);
-
-  // order matters: later bounds give way to earlier ones (bound_tightening.hpp)
-  accel_limit_ = std::make_shared<JointAccelerationLimit>(model_, c.limits.acceleration_scale);
-  position_limit_ = std::make_shared<JointPositionLimit>(model_, c.limits.position);
-  velocity_limit_ = std::make_shared<JointVelocityLimit>(model_, c.limits.velocity_scale);
-  torque_limit_ = std::make_shared<JointTorqueLimit>(model_, c.limits.torque_scale);
-  formulation_.addConstraint(accel_limit_);
-  formulation_.addConstraint(position_limit_);
-  formulation_.addConstraint(velocity_limit_);
-  formulation_.addConstraint(torque_limit_);
+  build(registry, collision);
+  formulation_.setRegularisation(config_.qp.regularisation);
 
   formulation_.reserveProblem(problem_);
   // room for the relaxation's phase 1 (one more variable, soft rows split)
@@ -71,8 +51,76 @@ Controller::Controller(Model model, const ControllerConfig& config, std::unique_
   relaxation_.reserve(kNumVars, problem_.capacityEq(), problem_.capacityIn());
 
   ControlInputs start;
-  start.q = c.posture.target;
+  start.q = config_.posture.target;
   reset(start);
+}
+
+void Controller::build(const ControllerRegistry& registry, const CollisionConfig* collision) {
+  // tasks and constraints in list order; the order of the constraints
+  // matters: later bounds give way to earlier ones (bound_tightening.hpp)
+  for (const ElementEntry& e : config_.tasks) {
+    BuiltTask b = registry.buildTask(e, model_, config_, collision);
+    if (b.row_weights.size() == 0) formulation_.addTask(b.task, b.weight);
+    else formulation_.addTask(b.task, b.weight, b.row_weights);
+    if (!e.enabled) formulation_.setTaskEnabled(e.name, false);
+    tasks_.push_back(b.task);
+    if (!observation_) observation_ = std::dynamic_pointer_cast<ObservationTask>(b.task);
+    if (!tracking_) tracking_ = std::dynamic_pointer_cast<TrajectoryTrackingTask>(b.task);
+    if (!posture_) posture_ = std::dynamic_pointer_cast<PostureTask>(b.task);
+    if (!pose_) pose_ = std::dynamic_pointer_cast<EndEffectorPoseTask>(b.task);
+  }
+  for (const ElementEntry& e : config_.constraints) {
+    std::shared_ptr<Constraint> c = registry.buildConstraint(e, model_, config_, collision);
+    if (!c) continue;  // not here (collision without a scene)
+    formulation_.addConstraint(c);
+    if (!e.enabled) formulation_.setConstraintEnabled(e.name, false);
+    constraints_.push_back(c);
+    if (!position_limit_) position_limit_ = std::dynamic_pointer_cast<JointPositionLimit>(c);
+    if (!velocity_limit_) velocity_limit_ = std::dynamic_pointer_cast<JointVelocityLimit>(c);
+  }
+  const std::string file = config_.tasks.empty() || config_.tasks.front().file.empty()
+                               ? std::string("controller config")
+                               : config_.tasks.front().file;
+  if (!observation_ || !tracking_)
+    throw InputError(file + ": key 'tasks': the controller needs a task of type observation and one of type "
+                            "trajectory_tracking (the observed object and the grasp frame)");
+}
+
+int Controller::taskIndex(const std::string& name) const {
+  for (std::size_t i = 0; i < tasks_.size(); ++i)
+    if (tasks_[i]->name() == name) return static_cast<int>(i);
+  return -1;
+}
+
+bool Controller::setTaskEnabled(int index, bool enabled) {
+  if (index < 0 || index >= numTasks()) return false;
+  formulation_.setTaskEnabled(tasks_[index]->name(), enabled);
+  return true;
+}
+
+bool Controller::taskEnabled(int index) const {
+  return index >= 0 && index < numTasks() && formulation_.taskEnabled(tasks_[index]->name());
+}
+
+bool Controller::setTaskTarget(int index, const TaskTarget& target) {
+  return index >= 0 && index < numTasks() && tasks_[index]->applyTarget(target);
+}
+
+bool Controller::setTaskGains(int index, const TaskGains& gains) {
+  return index >= 0 && index < numTasks() && tasks_[index]->applyGains(gains);
+}
+
+bool Controller::setTaskOffset(int index, const GraspOffset& offset) {
+  if (index < 0 || index >= numTasks()) return false;
+  GraspOffset o = offset;
+  const double n = o.free_axis.norm();
+  if (!(n > 1e-9) || !o.free_axis.allFinite()) {
+    o.has_free_axis = false;
+    o.free_axis = Vector3::UnitZ();
+  } else {
+    o.free_axis /= n;
+  }
+  return tasks_[index]->applyOffset(o);
 }
 
 void Controller::reset(const ControlInputs& in) {
@@ -83,8 +131,8 @@ void Controller::reset(const ControlInputs& in) {
   integrator_.reset(X_obs);
   observation_->setTarget(X_obs);
   has_observation_ = false;
-  pose_->setTarget(X_tcp);
-  position_limit_->reset();
+  if (pose_) pose_->setTarget(X_tcp);
+  if (position_limit_) position_limit_->reset();
   solver_->resetWarmStart();
   qdd_.setZero();
   tau_ = data_.h;
@@ -194,15 +242,8 @@ void Controller::resetObservedObject(const Isometry& pose, const Vector6& veloci
 }
 
 void Controller::setGraspOffset(const GraspOffset& offset) {
-  GraspOffset o = offset;
-  const double n = o.free_axis.norm();
-  if (!(n > 1e-9) || !o.free_axis.allFinite()) {
-    o.has_free_axis = false;
-    o.free_axis = Vector3::UnitZ();
-  } else {
-    o.free_axis /= n;
-  }
-  tracking_->setGraspOffset(o);
+  for (int i = 0; i < numTasks(); ++i)
+    if (tasks_[i] == tracking_) setTaskOffset(i, offset);
 }
 
 bool Controller::setTaskEnabled(const std::string& name, bool enabled) {
@@ -239,7 +280,7 @@ Vector3 Controller::sensorAcceleration() const {
 }
 
 void Controller::setSpeedScale(double s) {
-  if (!std::isfinite(s)) return;
+  if (!std::isfinite(s) || !velocity_limit_) return;
   velocity_limit_->setSpeedScale(std::min(1.0, std::max(1e-3, s)));
 }
 

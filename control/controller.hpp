@@ -6,12 +6,20 @@
 //   f the known external wrench at the wrist sensor, setExternalWrench; while
 //   carrying, the observed joint disturbance instead, setDisturbanceFeedback).
 //
-// Tasks (names): "observation", "tracking", "posture", "pose" (disabled at
-// start). Keep "observation" on whenever "tracking" is on: the tracking rows
+// The tasks and constraints are the entries of config/controller.yaml's
+// `tasks:` and `constraints:` lists, built in order through a registry of
+// types (controller_registry.hpp). Shipped: tasks "observation",
+// "tracking", "posture", "pose" (disabled at start); constraints
+// "joint_acceleration", "joint_position", "joint_velocity", "joint_torque"
+// and "collision" (built when the caller hands over a collision scene). The
+// controller needs one task of type observation and one of type
+// trajectory_tracking (the observed object and the grasp frame); the others
+// may be left out. Keep "observation" on whenever "tracking" is on: the tracking rows
 // also involve alphadot_obs, and without the (much heavier) observation task
-// only the regularisation would stop them from moving the observed object. Constraints: "joint_acceleration", "joint_position",
-// "joint_velocity", "joint_torque"; more (e.g. collision) may be added through
-// formulation(). When the rows cannot all hold and some are soft (collision),
+// only the regularisation would stop them from moving the observed object.
+// Any task is addressed by its name through generic handles (taskIndex,
+// then setTaskEnabled / setTaskTarget / setTaskGains / setTaskOffset), which
+// is how the state machine reaches it (runtime/adapter). When the rows cannot all hold and some are soft (collision),
 // they are relaxed by the least common amount and the QP solved again
 // (SoftRowRelaxation; counted: relaxedCount, lastSlack) - the arm keeps
 // within its own limits and escapes as well as they allow. If the QP still
@@ -34,6 +42,7 @@
 #include "control/constraints/joint_torque_limit.hpp"
 #include "control/constraints/joint_velocity_limit.hpp"
 #include "control/controller_config.hpp"
+#include "control/controller_registry.hpp"
 #include "control/formulation/formulation.hpp"
 #include "control/qp/qp_solver.hpp"
 #include "control/qp/soft_row_relaxation.hpp"
@@ -56,8 +65,14 @@ struct ControlInputs {
 class Controller {
  public:
   /// Copies the model. `solver` defaults to the Goldfarb-Idnani solver.
+  /// Builds config.tasks and config.constraints with the shipped registry
+  /// and no collision scene (a "collision" entry is skipped).
   /// Throws InputError / std::out_of_range on a config that does not fit the model.
   Controller(Model model, const ControllerConfig& config, std::unique_ptr<QpSolver> solver = nullptr);
+  /// Same with `registry`'s types, and `collision` (may be null) for the
+  /// constraints of type collision.
+  Controller(Model model, const ControllerConfig& config, const ControllerRegistry& registry,
+             const CollisionConfig* collision, std::unique_ptr<QpSolver> solver = nullptr);
 
   /// Starts from the arm state `in`: the observed object is placed so that
   /// its grasp frame coincides with the TCP (at rest), the observation and
@@ -77,8 +92,28 @@ class Controller {
   /// Task and constraint switches by name; false if the name is unknown.
   bool setTaskEnabled(const std::string& name, bool enabled);
   bool setConstraintEnabled(const std::string& name, bool enabled);
-  void setPoseTarget(const Isometry& target) { pose_->setTarget(target); }
-  void setPostureTarget(const Vector7& q_ref) { posture_->setTarget(q_ref); }
+  void setPoseTarget(const Isometry& target) {
+    if (pose_) pose_->setTarget(target);
+  }
+  void setPostureTarget(const Vector7& q_ref) {
+    if (posture_) posture_->setTarget(q_ref);
+  }
+
+  // -- generic task handles (real-time safe but taskIndex) ------------------
+  /// Index of the task named `name` in config.tasks order, -1 if none (start-up: compares strings).
+  int taskIndex(const std::string& name) const;
+  int numTasks() const { return static_cast<int>(tasks_.size()); }
+  const Task& task(int index) const { return *tasks_[index]; }
+  /// On / off (false for an invalid index).
+  bool setTaskEnabled(int index, bool enabled);
+  bool taskEnabled(int index) const;
+  /// Target, gains, offset of a task (false: invalid index, or the task has no such notion).
+  bool setTaskTarget(int index, const TaskTarget& target);
+  bool setTaskGains(int index, const TaskGains& gains);
+  /// The offset's free axis is normalised (none if it is zero or not finite).
+  bool setTaskOffset(int index, const GraspOffset& offset);
+  /// The built constraints in config.constraints order (a skipped entry is absent).
+  const std::vector<std::shared_ptr<Constraint>>& constraints() const { return constraints_; }
   void setPayload(const Payload& payload);
   void clearPayload();
   /// The known external wrench f on the robot at the "ft_sensor" origin,
@@ -135,10 +170,12 @@ class Controller {
   const Data& data() const { return data_; }
   const ControllerConfig& config() const { return config_; }
   Formulation& formulation() { return formulation_; }
+  const Formulation& formulation() const { return formulation_; }
   const QpProblem& problem() const { return problem_; }
   QpSolver& solver() { return *solver_; }
   ObservationTask& observationTask() { return *observation_; }
   TrajectoryTrackingTask& trackingTask() { return *tracking_; }
+  /// These need a task / constraint of that type in the config (the shipped one has them).
   PostureTask& postureTask() { return *posture_; }
   EndEffectorPoseTask& poseTask() { return *pose_; }
   JointPositionLimit& positionLimit() { return *position_limit_; }
@@ -164,14 +201,17 @@ class Controller {
   bool disturbance_learn_ = true;
   Matrix6x7 J_ft_ = Matrix6x7::Zero();
 
+  void build(const ControllerRegistry& registry, const CollisionConfig* collision);
+
+  std::vector<std::shared_ptr<Task>> tasks_;              // config.tasks order
+  std::vector<std::shared_ptr<Constraint>> constraints_;  // config.constraints order
+  // the tasks and constraints the controller itself reads (found by type)
   std::shared_ptr<ObservationTask> observation_;
   std::shared_ptr<TrajectoryTrackingTask> tracking_;
-  std::shared_ptr<PostureTask> posture_;
-  std::shared_ptr<EndEffectorPoseTask> pose_;
-  std::shared_ptr<JointAccelerationLimit> accel_limit_;
-  std::shared_ptr<JointPositionLimit> position_limit_;
-  std::shared_ptr<JointVelocityLimit> velocity_limit_;
-  std::shared_ptr<JointTorqueLimit> torque_limit_;
+  std::shared_ptr<PostureTask> posture_;        // may be null
+  std::shared_ptr<EndEffectorPoseTask> pose_;   // may be null
+  std::shared_ptr<JointPositionLimit> position_limit_;  // may be null
+  std::shared_ptr<JointVelocityLimit> velocity_limit_;  // may be null
 
   ObservedObjectIntegrator integrator_;
   bool has_observation_ = false;

@@ -49,13 +49,58 @@ double readWeight(const YamlReader& r, double def) {
   return c ? c->checkRange(c->asDouble(), 0.0, 1e12) : def;
 }
 
+// `tasks:` / `constraints:`: a list of {name, type, enabled?, parameters...}
+std::vector<ElementEntry> readEntries(const YamlReader& list, const char* what) {
+  if (!list.isSequence() || list.size() == 0 || list.size() > 16)
+    list.fail(std::string("expected a list of 1 to 16 ") + what + " {name: ..., type: ..., enabled: true|false, <parameters>}");
+  std::vector<ElementEntry> out;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const YamlReader r = list.at(i);
+    if (!r.isMap()) r.fail(std::string("expected a map {name: ..., type: ...} (one of the ") + what + ")");
+    ElementEntry e;
+    const YamlReader name = r.child("name");
+    e.name = name.asString();
+    if (e.name.empty()) name.fail("expected a non-empty name");
+    for (const ElementEntry& other : out)
+      if (other.name == e.name) name.fail("duplicate name '" + e.name + "'");
+    const YamlReader type = r.child("type");
+    e.type = type.asString();
+    if (e.type.empty()) type.fail("expected a non-empty type");
+    e.enabled = r.getBool("enabled", true);
+    e.node = std::make_shared<const YAML::Node>(r.node());
+    e.file = r.file();
+    e.path = r.path();
+    out.push_back(std::move(e));  // the other keys: the type's parameters, checked when the controller is built
+  }
+  return out;
+}
+
 std::optional<YamlReader> section(const YamlReader& root, const char* key) {
   auto r = root.optionalChild(key);
   if (r && !r->isMap()) r->fail("expected a map");
   return r;
 }
 
+ElementEntry entry(const char* name, const char* type, bool enabled = true) {
+  ElementEntry e;
+  e.name = name;
+  e.type = type;
+  e.enabled = enabled;
+  return e;
+}
+
 }  // namespace
+
+std::vector<ElementEntry> defaultTaskEntries() {
+  return {entry("observation", "observation"), entry("tracking", "trajectory_tracking"), entry("posture", "posture"),
+          entry("pose", "pose", false)};
+}
+
+std::vector<ElementEntry> defaultConstraintEntries() {
+  return {entry("joint_acceleration", "joint_acceleration_limit"), entry("joint_position", "joint_position_limit"),
+          entry("joint_velocity", "joint_velocity_limit"), entry("joint_torque", "joint_torque_limit"),
+          entry("collision", "collision")};
+}
 
 ControllerConfig parseControllerConfig(const YamlReader& root) { return parseControllerConfig(root, defaultJointLimits()); }
 
@@ -66,6 +111,8 @@ ControllerConfig parseControllerConfig(const YamlReader& root, const JointLimits
 
   if (auto c = root.optionalChild("period")) cfg.period = c->checkRange(c->asDouble(), 1e-5, 0.1);
   if (auto c = root.optionalChild("frame")) cfg.frame = c->asString();
+  if (auto c = root.optionalChild("tasks")) cfg.tasks = readEntries(*c, "tasks");
+  if (auto c = root.optionalChild("constraints")) cfg.constraints = readEntries(*c, "constraints");
 
   if (auto s = section(root, "observation")) {
     cfg.observation.gains = readGains(*s, cfg.observation.gains);

@@ -4,7 +4,9 @@
 // the datasheet limits, period s.
 #pragma once
 
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "config/yaml_reader.hpp"
 #include "control/constraints/joint_position_limit.hpp"
@@ -23,9 +25,40 @@ struct AxisGains {
   Vector3 weights = Vector3::Ones();
 };
 
+/// One entry of controller.yaml's `tasks:` or `constraints:` list: a task or
+/// constraint the controller builds, in list order, through the registry
+/// (control/controller_registry.hpp): its name (what the state machine and
+/// logs call it), its registered type, whether it starts enabled, and the
+/// entry itself, whose other keys are the type's parameters (read by the
+/// type's factory; a key it does not read is an error).
+struct ElementEntry {
+  std::string name;
+  std::string type;
+  bool enabled = true;
+  /// The entry's map (null for a default entry: no parameters). Held by
+  /// pointer: assigning one YAML::Node to another rebinds the node it
+  /// referred to (yaml-cpp), which a copy of the config must never do.
+  std::shared_ptr<const YAML::Node> node;
+  std::string file;  ///< where it was read (messages)
+  std::string path;  ///< dotted key of the entry, e.g. "tasks[1]"
+};
+
+/// The shipped task list: observation, tracking (trajectory_tracking),
+/// posture, pose (off at start); and constraint list: the four joint limits
+/// then collision. What an absent `tasks:` / `constraints:` key means.
+std::vector<ElementEntry> defaultTaskEntries();
+std::vector<ElementEntry> defaultConstraintEntries();
+
 struct ControllerConfig {
   double period = 0.001;  ///< control period dt, s
   std::string frame = "tcp";  ///< model frame that grasps
+
+  /// What the QP is assembled from, in order (controller_registry.hpp). The
+  /// shipped types read their gains and weights from the typed sections
+  /// below (observation, tracking, posture, pose_task, limits), so that
+  /// scenario `set:` keys keep their spelling.
+  std::vector<ElementEntry> tasks = defaultTaskEntries();
+  std::vector<ElementEntry> constraints = defaultConstraintEntries();
 
   struct Observation {
     PdGains gains = PdGains::critical(1500.0);

@@ -38,13 +38,23 @@ CycleSettings defaultCycleSettings() {
 
 HandoverCycle::HandoverCycle(const CycleSettings& settings)
     : settings_(settings),
-      controller_(control::loadModel(settings.robot, control::Model{}.finger_opening), settings.controller),
-      collision_(std::make_shared<control::CollisionConstraint>(controller_.model(), settings.collision)),
+      controller_(control::loadModel(settings.robot, control::Model{}.finger_opening), settings.controller,
+                  settings.registry, &settings.collision),
       estimator_(settings.estimator),
       obs_target_(settings.target),
       adapter_(controller_, obs_target_, settings.object_grasp, settings.gripper_open_width),
       contact_(controller_.model(), settings.controller.contact_wrench, settings.controller.period) {
-  controller_.formulation().addConstraint(collision_);
+  // the collision constraint the cycle feeds (stage 6) and queries
+  for (const auto& c : controller_.constraints()) {
+    if (!collision_) collision_ = std::dynamic_pointer_cast<control::CollisionConstraint>(c);
+  }
+  if (!collision_) {
+    throw InputError(settings.controller.constraints.empty() || settings.controller.constraints.front().file.empty()
+                         ? std::string("controller config: key 'constraints': the handover cycle needs a constraint of "
+                                       "type collision")
+                         : settings.controller.constraints.front().file +
+                               ": key 'constraints': the handover cycle needs a constraint of type collision");
+  }
   hand_rule_ = collision_->collisionModel().ruleIndex("person_hand_gripper");
   adapter_.setCollision(collision_.get(), collision_->collisionModel().ruleIndex("object_gripper"));
   ft_frame_ = controller_.model().frameId("ft_sensor");

@@ -82,6 +82,9 @@ namespace handover::runtime {
 struct CycleSettings {
   control::RobotDescription robot;            ///< the robot's model: URDF + names, roles, limits
   control::ControllerConfig controller;       ///< tasks, constraints, gains (config/controller.yaml)
+  /// The task and constraint types config/controller.yaml's entries may name
+  /// (control/controller_registry.hpp); add a type here before constructing the cycle.
+  control::ControllerRegistry registry = control::ControllerRegistry::shipped();
   control::CollisionConfig collision;         ///< collision pairs (config/collision.yaml)
   std::string fsm_config_path;                ///< the state machine (config/fsm.yaml)
   perception::EstimatorSettings estimator;    ///< incl. the object's pose in the person's hand
@@ -137,8 +140,8 @@ class HandoverCycle {
   /// Tears down the active states (end of a run).
   void stop() { machine_->stop(); }
 
-  /// The QP's tasks and constraints, to add one at start-up (before
-  /// start(); docs/architecture.md). Not RT safe.
+  /// The QP's tasks and constraints (built from settings.controller's
+  /// entries through settings.registry; docs/architecture.md). Not RT safe.
   control::Formulation& formulation() { return controller_.formulation(); }
 
   // --- read-outs of the last cycle (for logs, judges, tests) ---------------

@@ -6,7 +6,20 @@ namespace handover::control {
 
 EndEffectorPoseTask::EndEffectorPoseTask(const Model& model, std::string name, const std::string& frame,
                                          PdGains translation, PdGains orientation)
-    : name_(std::move(name)), frame_id_(model.frameId(frame)), translation_(translation), orientation_(orientation) {}
+    : name_(std::move(name)), frame_id_(model.frameId(frame)), translation_(translation), orientation_(orientation),
+      configured_translation_(translation), configured_orientation_(orientation) {}
+
+bool EndEffectorPoseTask::applyTarget(const TaskTarget& target) {
+  if (target.kind == TaskTarget::Kind::kJoints) return false;
+  if (target.kind == TaskTarget::Kind::kPose) target_ = target.pose;
+  return true;
+}
+
+bool EndEffectorPoseTask::applyGains(const TaskGains& gains) {
+  if (gains.configured) setGains(configured_translation_, configured_orientation_);
+  else setGains(gains.translation, gains.orientation);
+  return true;
+}
 
 void EndEffectorPoseTask::setGains(const PdGains& translation, const PdGains& orientation) {
   translation_ = translation;

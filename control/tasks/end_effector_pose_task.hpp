@@ -26,6 +26,11 @@ class EndEffectorPoseTask : public Task {
 
   /// Target pose of the frame in the world.
   void setTarget(const Isometry& target) { target_ = target; }
+  /// Generic handles: a pose target (world; kConfigured keeps the current
+  /// one: a pose task has no configured target), gains (configured = the
+  /// constructor's).
+  bool applyTarget(const TaskTarget& target) override;
+  bool applyGains(const TaskGains& gains) override;
   const Isometry& target() const { return target_; }
   void setGains(const PdGains& translation, const PdGains& orientation);
   const PdGains& translationGains() const { return translation_; }
@@ -37,6 +42,7 @@ class EndEffectorPoseTask : public Task {
   std::string name_;
   int frame_id_ = 0;
   PdGains translation_, orientation_;
+  PdGains configured_translation_, configured_orientation_;
   Isometry target_ = Isometry::Identity();
   Matrix6x7 J_ = Matrix6x7::Zero();
   Vector6 error_ = Vector6::Zero();

@@ -3,7 +3,18 @@
 namespace handover::control {
 
 PostureTask::PostureTask(std::string name, PdGains gains, const Vector7& q_ref)
-    : name_(std::move(name)), gains_(gains), q_ref_(q_ref) {}
+    : name_(std::move(name)), gains_(gains), q_ref_(q_ref), configured_gains_(gains), configured_q_ref_(q_ref) {}
+
+bool PostureTask::applyTarget(const TaskTarget& target) {
+  if (target.kind == TaskTarget::Kind::kPose) return false;
+  q_ref_ = target.kind == TaskTarget::Kind::kJoints ? target.q : configured_q_ref_;
+  return true;
+}
+
+bool PostureTask::applyGains(const TaskGains& gains) {
+  gains_ = gains.configured ? configured_gains_ : gains.translation;
+  return true;
+}
 
 void PostureTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen::MatrixXd> A, Eigen::Ref<Eigen::VectorXd> b) {
   const Data& data = *ctx.data;

@@ -21,6 +21,10 @@ class PostureTask : public Task {
 
   /// Reference posture, rad.
   void setTarget(const Vector7& q_ref) { q_ref_ = q_ref; }
+  /// Generic handles: joint target (kConfigured = the constructor's q_ref),
+  /// gains (`translation` is the joint gain; configured = the constructor's).
+  bool applyTarget(const TaskTarget& target) override;
+  bool applyGains(const TaskGains& gains) override;
   const Vector7& target() const { return q_ref_; }
   void setGains(const PdGains& gains) { gains_ = gains; }
   const PdGains& gains() const { return gains_; }
@@ -29,6 +33,8 @@ class PostureTask : public Task {
   std::string name_;
   PdGains gains_;
   Vector7 q_ref_;
+  PdGains configured_gains_;
+  Vector7 configured_q_ref_;
 };
 
 }  // namespace handover::control

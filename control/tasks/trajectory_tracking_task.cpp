@@ -6,7 +6,14 @@ namespace handover::control {
 
 TrajectoryTrackingTask::TrajectoryTrackingTask(const Model& model, std::string name, const std::string& frame,
                                                PdGains translation, PdGains orientation)
-    : name_(std::move(name)), frame_id_(model.frameId(frame)), translation_(translation), orientation_(orientation) {}
+    : name_(std::move(name)), frame_id_(model.frameId(frame)), translation_(translation), orientation_(orientation),
+      configured_translation_(translation), configured_orientation_(orientation) {}
+
+bool TrajectoryTrackingTask::applyGains(const TaskGains& gains) {
+  if (gains.configured) setGains(configured_translation_, configured_orientation_);
+  else setGains(gains.translation, gains.orientation);
+  return true;
+}
 
 void TrajectoryTrackingTask::setGains(const PdGains& translation, const PdGains& orientation) {
   translation_ = translation;

@@ -44,6 +44,12 @@ class TrajectoryTrackingTask : public Task {
   void compute(const ControlContext& ctx, Eigen::Ref<Eigen::MatrixXd> A, Eigen::Ref<Eigen::VectorXd> b) override;
 
   void setGraspOffset(const GraspOffset& offset) { offset_ = offset; }
+  /// Generic handles: gains (configured = the constructor's), offset (setGraspOffset).
+  bool applyGains(const TaskGains& gains) override;
+  bool applyOffset(const GraspOffset& offset) override {
+    offset_ = offset;
+    return true;
+  }
   const GraspOffset& graspOffset() const { return offset_; }
   void setGains(const PdGains& translation, const PdGains& orientation);
   const PdGains& translationGains() const { return translation_; }
@@ -59,6 +65,7 @@ class TrajectoryTrackingTask : public Task {
   std::string name_;
   int frame_id_ = 0;
   PdGains translation_, orientation_;
+  PdGains configured_translation_, configured_orientation_;
   GraspOffset offset_;
   Matrix6x7 J_ = Matrix6x7::Zero();
   Vector6 error_ = Vector6::Zero();

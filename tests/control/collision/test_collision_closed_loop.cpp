@@ -107,18 +107,22 @@ Isometry pointingDown(const Vector3& p) {
 /// A controller on the repository's model and config, with the set-point pose
 /// task on instead of tracking (no observation target in these runs), and the
 /// collision constraint from config/collision.yaml when `with_collision`.
+/// These runs drive the controller below the handover cycle on purpose (its
+/// state machine would replace the targets): docs/architecture.md.
 struct Rig {
   ControllerConfig cfg = loadControllerConfig(defaultControllerConfigPath());
   CollisionConfig ccfg = loadCollisionConfig(defaultCollisionConfigPath());
   Controller controller;
   std::shared_ptr<CollisionConstraint> collision;
 
-  explicit Rig(bool with_collision) : controller(loadModel(kUrdf), cfg) {
-    if (with_collision) {
-      collision = std::make_shared<CollisionConstraint>(controller.model(), ccfg);
-      controller.formulation().addConstraint(collision);
-      collision->setEnvironment(CollisionEnvironment{});  // no person
-    }
+  // the collision constraint is config/controller.yaml's "collision" entry, built
+  // by the registry as in the handover cycle (skipped without a collision scene)
+  explicit Rig(bool with_collision)
+      : controller(loadModel(kUrdf), cfg, ControllerRegistry::shipped(), with_collision ? &ccfg : nullptr) {
+    for (const auto& c : controller.constraints())
+      if (!collision) collision = std::dynamic_pointer_cast<CollisionConstraint>(c);
+    EXPECT_EQ(collision != nullptr, with_collision);
+    if (collision) collision->setEnvironment(CollisionEnvironment{});  // no person
   }
   void start(const Vector7& q0, const Isometry& pose_target, const Vector7& posture_target) {
     ControlInputs in;
