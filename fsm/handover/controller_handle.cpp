@@ -11,10 +11,16 @@ const char* toString(ObservationTarget target) {
   return "?";
 }
 
+CommandLedger::CommandLedger(ControllerInterface& controller) : controller_(controller) {
+  tasks_.tracking = controller_.taskHandle("tracking");
+  tasks_.pose = controller_.taskHandle("pose");
+  tasks_.posture = controller_.taskHandle("posture");
+}
+
 void CommandLedger::apply(Channel c, const ScopedCommands& v) {
   const ChannelEntry& e = channelEntry(c);
   e.copy(v, current_);
-  e.send(controller_, current_);
+  e.send(controller_, tasks_, current_);
 }
 
 void CommandLedger::setGripper(double width, double force) {
@@ -112,6 +118,18 @@ void ControllerHandle::clearTrackingStiffness() {
   ScopedCommands next = ledger_->current();
   next.gains.active = false;
   change(Channel::kGains, next);
+}
+
+void ControllerHandle::setTaskEnabled(int task, bool on) {
+  if (task < 0 || task >= 32 || task == ledger_->tasks().tracking || task == ledger_->tasks().pose) {
+    if (task == ledger_->tasks().tracking && task >= 0) enableTracking(on);
+    return;  // pose: setPoseTarget / clearPoseTarget (a pose task needs its target)
+  }
+  ScopedCommands next = ledger_->current();
+  const std::uint32_t bit = 1u << task;
+  next.task_switches.mask |= bit;
+  next.task_switches.on = on ? (next.task_switches.on | bit) : (next.task_switches.on & ~bit);
+  change(Channel::kTaskSwitches, next);
 }
 
 void ControllerHandle::relaxHandClearance(bool relaxed) {

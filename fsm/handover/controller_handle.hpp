@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "fsm/handover/controller_interface.hpp"
 #include "fsm/handover/scoped_commands.hpp"
@@ -22,11 +23,13 @@ namespace handover::fsm {
 /// The controller as seen by all states, with the current scoped values.
 class CommandLedger {
  public:
-  explicit CommandLedger(ControllerInterface& controller) : controller_(controller) {}
+  /// Resolves the handles of the tasks the named channels address.
+  explicit CommandLedger(ControllerInterface& controller);
   const ScopedCommands& current() const { return current_; }
   /// Writes `value`'s channel `c` (that member only) to the controller and records it.
   void apply(Channel c, const ScopedCommands& value);
   ControllerInterface& controller() { return controller_; }
+  const TaskHandles& tasks() const { return tasks_; }
   // persistent state, for queries (e.g. "is a payload set")
   double gripperWidth() const { return gripper_width_; }
   bool payloadSet() const { return payload_set_; }
@@ -36,6 +39,7 @@ class CommandLedger {
 
  private:
   ControllerInterface& controller_;
+  TaskHandles tasks_;
   ScopedCommands current_;
   double gripper_width_ = -1.0;  ///< -1 = never commanded
   bool payload_set_ = false;
@@ -61,6 +65,11 @@ class ControllerHandle {
   void setTrackingStiffness(double translation, double orientation);
   void clearTrackingStiffness();
   void relaxHandClearance(bool relaxed);
+  /// Any task by name (config/controller.yaml `tasks:`): its handle, -1 if
+  /// none (compares strings: resolve once, e.g. in onStart), and a scoped
+  /// on/off switch (handles 0..31; tracking and pose have their own calls above).
+  int taskHandle(const std::string& name) const { return ledger_->controller().taskHandle(name); }
+  void setTaskEnabled(int task, bool on);
 
   void setGripper(double width, double force) { ledger_->setGripper(width, force); }
   void setPayload(double mass, const Vector3& com) { ledger_->setPayload(mass, com); }

@@ -1,8 +1,11 @@
 // What the handover states may ask of the controller. The QP controller
 // implements it through an adapter (written on the control side); tests use a
-// recording fake. Every call only stores a set-point that the controller
-// applies at its next solve, so calls must be cheap and real-time safe
-// (no allocation, no I/O, no blocking).
+// recording fake. Tasks are addressed through generic handles (a task's
+// name in config/controller.yaml, then enable / target / gains / offset),
+// so a new task needs no new call here. Every call only stores a set-point
+// that the controller applies at its next solve, so calls must be cheap and
+// real-time safe (no allocation, no I/O, no blocking); taskHandle is a
+// start-up call.
 //
 // Frames and units: world frame (z up, base at the origin), SI units; poses
 // are Eigen::Isometry3d; joint vectors are the 7 arm joints in chain order.
@@ -10,6 +13,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <string>
 
 namespace handover::fsm {
 
@@ -28,6 +32,23 @@ struct TrackingOffset {
   bool planned = false;
 };
 
+/// A task's reference for setTaskTarget: the one it was configured with, a
+/// pose (world frame) or joint positions (rad, chain order).
+struct TaskTarget {
+  enum class Kind { kConfigured, kPose, kJoints };
+  Kind kind = Kind::kConfigured;
+  Isometry pose = Isometry::Identity();
+  Vector7 q = Vector7::Zero();
+};
+
+/// A task's gains for setTaskGains: inactive = the configured gains; else
+/// critically damped stiffnesses (1/s^2) for translation and orientation.
+struct TaskGains {
+  bool active = false;
+  double translation = 0.0;
+  double orientation = 0.0;
+};
+
 /// Which sensed body the observation task follows.
 enum class ObservationTarget { kNone, kObject, kHand };
 const char* toString(ObservationTarget target);
@@ -36,33 +57,34 @@ class ControllerInterface {
  public:
   virtual ~ControllerInterface() = default;
 
-  // --- QP configuration (scoped: a state that changes one undoes it) ------
+  // --- the controller's tasks, by name (scoped through the ledger) --------
+  /// Handle of the task named `name` in the controller's config
+  /// (config/controller.yaml `tasks:`, e.g. "tracking", "pose", "posture"),
+  /// -1 when it has none (the calls below then do nothing). Start-up: the
+  /// ledger resolves its handles once.
+  virtual int taskHandle(const std::string& name) const = 0;
+  /// Turns a task on or off (e.g. "tracking": the end effector follows the
+  /// target frame derived from the observed frame).
+  virtual void setTaskEnabled(int task, bool on) = 0;
+  /// Back to the state the config gives it (`enabled:` of its entry).
+  virtual void resetTaskEnabled(int task) = 0;
+  /// A task's reference (e.g. the TCP set-point of "pose", world frame; the
+  /// joints of "posture"); kConfigured returns to the configured one.
+  virtual void setTaskTarget(int task, const TaskTarget& target) = 0;
+  /// A task's gains for the current phase (e.g. "tracking"); inactive
+  /// returns to the configured gains.
+  virtual void setTaskGains(int task, const TaskGains& gains) = 0;
+  /// A task's frame in the observed frame (e.g. "tracking": the grasp frame
+  /// in the object frame, human to robot, or the TCP pose in the hand frame
+  /// that puts the object in the hand, robot to human).
+  virtual void setTaskOffset(int task, const TrackingOffset& offset) = 0;
+
+  // --- QP configuration that is not a task (scoped) ------------------------
   /// Observation task reference: the sensed object, the person's hand, or
   /// none (the observed frame then coasts to rest).
   virtual void setObservationTarget(ObservationTarget target) = 0;
-  /// Turns the trajectory-tracking task (end effector follows the target
-  /// frame derived from the observed frame) on or off.
-  virtual void enableTracking(bool on) = 0;
-  /// Target frame of the tracking task expressed in the observed frame: the
-  /// grasp frame in the object frame (human to robot), or the TCP pose in
-  /// the hand frame that puts the object in the hand (robot to human).
-  virtual void setTrackingOffset(const TrackingOffset& offset) = 0;
-  /// Set-point for the TCP (world frame): retract, stow, safe or hold pose.
-  virtual void setPoseTarget(const Isometry& tcp_in_world) = 0;
-  virtual void clearPoseTarget() = 0;
-  /// Reference of the posture task (rad); clear returns to the default.
-  virtual void setPostureTarget(const Vector7& q) = 0;
-  virtual void clearPostureTarget() = 0;
   /// Scales every task's speed (0 = hold still, 1 = nominal).
   virtual void setSpeedScale(double scale) = 0;
-  /// Stiffness of the tracking task (1/s^2, translation and orientation,
-  /// critically damped) for the current phase; clear returns to the
-  /// configured gains. Optional: a controller without phase gains ignores it.
-  virtual void setTrackingStiffness(double translation, double orientation) {
-    (void)translation;
-    (void)orientation;
-  }
-  virtual void clearTrackingStiffness() {}
   /// While the person's hand and the gripper share the object (closing on
   /// it, waiting for the release, being pulled), the clearance kept between
   /// the person's hand and the gripper is switched off; every other person

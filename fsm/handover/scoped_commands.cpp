@@ -20,29 +20,51 @@ bool equalMember(const ScopedCommands& a, const ScopedCommands& b) {
   return same(a.*Member, b.*Member);
 }
 template <auto Member>
-constexpr ChannelEntry row(Channel c, const char* name, void (*send)(ControllerInterface&, const ScopedCommands&)) {
+constexpr ChannelEntry row(Channel c, const char* name,
+                           void (*send)(ControllerInterface&, const TaskHandles&, const ScopedCommands&)) {
   return ChannelEntry{c, name, &copyMember<Member>, &equalMember<Member>, send};
 }
 
-// what each channel's value means to the controller
-void sendObservation(ControllerInterface& ctl, const ScopedCommands& v) { ctl.setObservationTarget(v.observation); }
-void sendTracking(ControllerInterface& ctl, const ScopedCommands& v) { ctl.enableTracking(v.tracking); }
-void sendTrackingOffset(ControllerInterface& ctl, const ScopedCommands& v) { ctl.setTrackingOffset(v.tracking_offset); }
-void sendPose(ControllerInterface& ctl, const ScopedCommands& v) {
-  if (v.pose.active) ctl.setPoseTarget(v.pose.pose);
-  else ctl.clearPoseTarget();
+// what each channel's value means to the controller: tasks through their handles
+using H = TaskHandles;
+void sendObservation(ControllerInterface& ctl, const H&, const ScopedCommands& v) {
+  ctl.setObservationTarget(v.observation);
 }
-void sendPosture(ControllerInterface& ctl, const ScopedCommands& v) {
-  if (v.posture.active) ctl.setPostureTarget(v.posture.q);
-  else ctl.clearPostureTarget();
+void sendTracking(ControllerInterface& ctl, const H& t, const ScopedCommands& v) {
+  ctl.setTaskEnabled(t.tracking, v.tracking);
 }
-void sendSpeedScale(ControllerInterface& ctl, const ScopedCommands& v) { ctl.setSpeedScale(v.speed_scale); }
-void sendGains(ControllerInterface& ctl, const ScopedCommands& v) {
-  if (v.gains.active) ctl.setTrackingStiffness(v.gains.translation, v.gains.orientation);
-  else ctl.clearTrackingStiffness();
+void sendTrackingOffset(ControllerInterface& ctl, const H& t, const ScopedCommands& v) {
+  ctl.setTaskOffset(t.tracking, v.tracking_offset);
 }
-void sendHandClearance(ControllerInterface& ctl, const ScopedCommands& v) {
+void sendPose(ControllerInterface& ctl, const H& t, const ScopedCommands& v) {
+  if (v.pose.active) {
+    TaskTarget target;
+    target.kind = TaskTarget::Kind::kPose;
+    target.pose = v.pose.pose;
+    ctl.setTaskTarget(t.pose, target);
+  }
+  ctl.setTaskEnabled(t.pose, v.pose.active);
+}
+void sendPosture(ControllerInterface& ctl, const H& t, const ScopedCommands& v) {
+  TaskTarget target;  // inactive: the configured posture
+  if (v.posture.active) {
+    target.kind = TaskTarget::Kind::kJoints;
+    target.q = v.posture.q;
+  }
+  ctl.setTaskTarget(t.posture, target);
+}
+void sendSpeedScale(ControllerInterface& ctl, const H&, const ScopedCommands& v) { ctl.setSpeedScale(v.speed_scale); }
+void sendGains(ControllerInterface& ctl, const H& t, const ScopedCommands& v) { ctl.setTaskGains(t.tracking, v.gains); }
+void sendHandClearance(ControllerInterface& ctl, const H&, const ScopedCommands& v) {
   ctl.relaxHandClearance(v.hand_clearance_relaxed);
+}
+void sendTaskSwitches(ControllerInterface& ctl, const H& t, const ScopedCommands& v) {
+  for (int i = 0; i < 32; ++i) {
+    if (i == t.tracking || i == t.pose) continue;  // switched by their own channels
+    const std::uint32_t bit = 1u << i;
+    if (v.task_switches.mask & bit) ctl.setTaskEnabled(i, (v.task_switches.on & bit) != 0);
+    else ctl.resetTaskEnabled(i);
+  }
 }
 
 using S = ScopedCommands;
@@ -55,6 +77,7 @@ constexpr ChannelEntry kTable[] = {
     row<&S::speed_scale>(Channel::kSpeedScale, "speed_scale", &sendSpeedScale),
     row<&S::gains>(Channel::kGains, "gains", &sendGains),
     row<&S::hand_clearance_relaxed>(Channel::kHandClearance, "hand_clearance", &sendHandClearance),
+    row<&S::task_switches>(Channel::kTaskSwitches, "task_switches", &sendTaskSwitches),
 };
 static_assert(sizeof(kTable) / sizeof(kTable[0]) == kNumChannels, "one row per channel");
 
@@ -74,6 +97,10 @@ bool operator==(const TrackingOffset& a, const TrackingOffset& b) {
 bool operator==(const PostureCommand& a, const PostureCommand& b) { return a.active == b.active && a.q == b.q; }
 bool operator==(const GainsCommand& a, const GainsCommand& b) {
   return a.active == b.active && a.translation == b.translation && a.orientation == b.orientation;
+}
+
+bool operator==(const TaskSwitches& a, const TaskSwitches& b) {
+  return a.mask == b.mask && (a.on & a.mask) == (b.on & b.mask);
 }
 
 const ChannelEntry* channelTable() { return kTable; }

@@ -27,11 +27,18 @@ struct PostureCommand {
   bool active = false;
   Vector7 q = Vector7::Zero();  ///< rad, the 7 arm joints in chain order
 };
-struct GainsCommand {
-  bool active = false;       ///< false: the configured tracking gains
-  double translation = 0.0;  ///< 1/s^2, critically damped
-  double orientation = 0.0;  ///< 1/s^2, critically damped
+/// The tracking task's phase gains (inactive: the configured ones).
+using GainsCommand = TaskGains;
+/// Tasks a state switched on or off by handle (handles 0..31), beyond those
+/// with a channel of their own (tracking, pose): bit i of `mask` says task i
+/// is switched, bit i of `on` to what; a task whose bit is clear is as
+/// configured.
+struct TaskSwitches {
+  std::uint32_t mask = 0;
+  std::uint32_t on = 0;
 };
+bool operator==(const TaskSwitches& a, const TaskSwitches& b);
+inline bool operator!=(const TaskSwitches& a, const TaskSwitches& b) { return !(a == b); }
 
 /// Exact comparisons (a restored value is the very value saved).
 bool operator==(const PoseCommand& a, const PoseCommand& b);
@@ -54,6 +61,7 @@ struct ScopedCommands {
   double speed_scale = 1.0;  ///< 0..1
   GainsCommand gains;
   bool hand_clearance_relaxed = false;
+  TaskSwitches task_switches;
 };
 
 /// Every channel compared through the table.
@@ -70,9 +78,18 @@ enum class Channel : std::uint8_t {
   kSpeedScale,
   kGains,
   kHandClearance,
+  kTaskSwitches,
   kCount
 };
 constexpr std::size_t kNumChannels = static_cast<std::size_t>(Channel::kCount);
+
+/// The handles of the tasks the named channels address (resolved once by
+/// the ledger through ControllerInterface::taskHandle; -1: none).
+struct TaskHandles {
+  int tracking = -1;
+  int pose = -1;
+  int posture = -1;
+};
 
 /// One row of the table.
 struct ChannelEntry {
@@ -82,7 +99,7 @@ struct ChannelEntry {
   void (*copy)(const ScopedCommands& from, ScopedCommands& to);
   bool (*equal)(const ScopedCommands& a, const ScopedCommands& b);
   /// Writes this channel's member of `value` to the controller.
-  void (*send)(ControllerInterface& controller, const ScopedCommands& value);
+  void (*send)(ControllerInterface& controller, const TaskHandles& tasks, const ScopedCommands& value);
 };
 
 /// The table, kNumChannels rows in Channel order.

@@ -8,8 +8,9 @@ namespace handover::runtime {
 
 ControllerAdapter::ControllerAdapter(control::Controller& controller, perception::ObservationTarget& target,
                                      const control::GraspOffset& object_grasp, double open_width)
-    : controller_(controller), target_(target), object_grasp_(object_grasp), placement_{object_grasp.placement, false},
-      open_width_(open_width), gripper_width_(open_width) {}
+    : controller_(controller), target_(target), object_grasp_(object_grasp),
+      tracking_(controller.taskIndex("tracking")), offset_task_(tracking_),
+      placement_{object_grasp.placement, false}, open_width_(open_width), gripper_width_(open_width) {}
 
 void ControllerAdapter::setObservationTarget(fsm::ObservationTarget target) {
   target_kind_ = target;
@@ -19,47 +20,51 @@ void ControllerAdapter::setObservationTarget(fsm::ObservationTarget target) {
   applyOffset();
 }
 
-void ControllerAdapter::enableTracking(bool on) {
-  tracking_on_ = on;
-  controller_.setTaskEnabled("tracking", on);
+void ControllerAdapter::setTaskEnabled(int task, bool on) { controller_.setTaskEnabled(task, on); }
+
+void ControllerAdapter::resetTaskEnabled(int task) {
+  if (task < 0 || task >= static_cast<int>(controller_.config().tasks.size())) return;
+  controller_.setTaskEnabled(task, controller_.config().tasks[task].enabled);
 }
 
-void ControllerAdapter::setTrackingOffset(const fsm::TrackingOffset& offset) {
+void ControllerAdapter::setTaskTarget(int task, const fsm::TaskTarget& target) {
+  control::TaskTarget t;
+  t.kind = target.kind == fsm::TaskTarget::Kind::kPose     ? control::TaskTarget::Kind::kPose
+           : target.kind == fsm::TaskTarget::Kind::kJoints ? control::TaskTarget::Kind::kJoints
+                                                           : control::TaskTarget::Kind::kConfigured;
+  t.pose = target.pose;
+  t.q = target.q;
+  controller_.setTaskTarget(task, t);
+}
+
+void ControllerAdapter::setTaskGains(int task, const fsm::TaskGains& gains) {
+  control::TaskGains g;
+  g.configured = !gains.active;
+  if (gains.active) {
+    g.translation = control::PdGains::critical(gains.translation);
+    g.orientation = control::PdGains::critical(gains.orientation);
+  }
+  controller_.setTaskGains(task, g);
+}
+
+void ControllerAdapter::setTaskOffset(int task, const fsm::TrackingOffset& offset) {
+  if (task < 0) return;
+  offset_task_ = task;
   placement_ = offset;
   applyOffset();
 }
 
 void ControllerAdapter::applyOffset() {
-  controller_.setGraspOffset(
-      makeTrackingOffset(placement_.target_in_observed, object_grasp_,
-                         target_kind_ == fsm::ObservationTarget::kObject, placement_.planned));
+  controller_.setTaskOffset(offset_task_, makeTrackingOffset(placement_.target_in_observed, object_grasp_,
+                                                             target_kind_ == fsm::ObservationTarget::kObject,
+                                                             placement_.planned));
 }
-
-void ControllerAdapter::setPoseTarget(const fsm::Isometry& tcp_in_world) {
-  controller_.setPoseTarget(tcp_in_world);
-  controller_.setTaskEnabled("pose", true);
-}
-
-void ControllerAdapter::clearPoseTarget() { controller_.setTaskEnabled("pose", false); }
-
-void ControllerAdapter::setPostureTarget(const fsm::Vector7& q) { controller_.setPostureTarget(q); }
-
-void ControllerAdapter::clearPostureTarget() { controller_.setPostureTarget(controller_.config().posture.target); }
 
 void ControllerAdapter::setSpeedScale(double scale) {
   // the controller scales its velocity limits; zero would make the QP hold
   // position abruptly, so keep a small floor (the FSM's stop uses a pose hold)
   speed_scale_ = std::clamp(scale, 0.0, 1.0);
   controller_.setSpeedScale(std::max(speed_scale_, 0.02));
-}
-
-void ControllerAdapter::setTrackingStiffness(double translation, double orientation) {
-  controller_.trackingTask().setGains(control::PdGains::critical(translation), control::PdGains::critical(orientation));
-}
-
-void ControllerAdapter::clearTrackingStiffness() {
-  const auto& t = controller_.config().tracking;
-  controller_.trackingTask().setGains(t.translation.gains, t.orientation.gains);
 }
 
 void ControllerAdapter::relaxHandClearance(bool relaxed) {

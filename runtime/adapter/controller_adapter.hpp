@@ -7,6 +7,8 @@
 // Frames: world; TCP offsets in the observed object's frame; SI units.
 #pragma once
 
+#include <string>
+
 #include "control/constraints/collision_constraint.hpp"
 #include "control/controller.hpp"
 #include "fsm/handover/controller_interface.hpp"
@@ -24,16 +26,19 @@ class ControllerAdapter : public fsm::ControllerInterface {
   /// Time of the current cycle (blends of the observation target start then).
   void setTime(double t) { now_ = t; }
 
+  // tasks by handle = the controller's task index (config/controller.yaml order)
+  int taskHandle(const std::string& name) const override { return controller_.taskIndex(name); }
+  void setTaskEnabled(int task, bool on) override;
+  void resetTaskEnabled(int task) override;
+  void setTaskTarget(int task, const fsm::TaskTarget& target) override;
+  /// Critically damped gains from the stiffnesses (inactive: configured).
+  void setTaskGains(int task, const fsm::TaskGains& gains) override;
+  /// Through the tracking-offset rule (tracking_offset_rule.hpp): the
+  /// object's grasp with its symmetry while the object is observed.
+  void setTaskOffset(int task, const fsm::TrackingOffset& offset) override;
+
   void setObservationTarget(fsm::ObservationTarget target) override;
-  void enableTracking(bool on) override;
-  void setTrackingOffset(const fsm::TrackingOffset& offset) override;
-  void setPoseTarget(const fsm::Isometry& tcp_in_world) override;
-  void clearPoseTarget() override;
-  void setPostureTarget(const fsm::Vector7& q) override;
-  void clearPostureTarget() override;
   void setSpeedScale(double scale) override;
-  void setTrackingStiffness(double translation, double orientation) override;
-  void clearTrackingStiffness() override;
   void relaxHandClearance(bool relaxed) override;
   /// The collision constraint whose scoped rules (`when: apart | sharing`,
   /// control/collision/collision_config.hpp) follow the state machine's
@@ -55,7 +60,8 @@ class ControllerAdapter : public fsm::ControllerInterface {
   bool handClearanceRelaxed() const { return hand_relaxed_; }
   double gripperWidth() const { return gripper_width_; }
   double gripperForce() const { return gripper_force_; }
-  bool trackingEnabled() const { return tracking_on_; }
+  /// The "tracking" task is on.
+  bool trackingEnabled() const { return controller_.taskEnabled(tracking_); }
   double speedScale() const { return speed_scale_; }
   /// The tracking target in the observed frame, as last set.
   const fsm::Isometry& trackingOffset() const { return placement_.target_in_observed; }
@@ -68,10 +74,11 @@ class ControllerAdapter : public fsm::ControllerInterface {
   control::Controller& controller_;
   perception::ObservationTarget& target_;
   control::GraspOffset object_grasp_;
-  fsm::TrackingOffset placement_;  ///< tracking target in the observed frame
+  int tracking_ = -1;              ///< the "tracking" task's index
+  int offset_task_ = -1;           ///< the task the last offset went to (re-applied on an observation switch)
+  fsm::TrackingOffset placement_;  ///< its target in the observed frame
   fsm::ObservationTarget target_kind_ = fsm::ObservationTarget::kNone;
   double now_ = 0.0;
-  bool tracking_on_ = false;
   bool payload_set_ = false;
   double open_width_;  ///< m, the gripper's widest opening (commands are clamped to it)
   double gripper_width_;

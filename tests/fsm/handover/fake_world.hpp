@@ -45,39 +45,59 @@ struct RecordingController : ControllerInterface {
     observation = t;
     if (record) calls.push_back(std::string("observe ") + toString(t));
   }
-  void enableTracking(bool on) override {
-    tracking = on;
-    if (record) calls.push_back(on ? "tracking on" : "tracking off");
+  // task handles: 0 tracking, 1 pose, 2 posture, 3.. `extra_tasks`
+  std::vector<std::string> extra_tasks;
+  std::vector<int> extra_enabled;  ///< per extra task: -1 as configured, 0 off, 1 on
+  int taskHandle(const std::string& name) const override {
+    if (name == "tracking") return 0;
+    if (name == "pose") return 1;
+    if (name == "posture") return 2;
+    for (std::size_t i = 0; i < extra_tasks.size(); ++i)
+      if (extra_tasks[i] == name) return 3 + static_cast<int>(i);
+    return -1;
   }
-  void setTrackingOffset(const TrackingOffset& o) override {
+  void setTaskEnabled(int task, bool on) override {
+    if (task == 0) {
+      tracking = on;
+      if (record) calls.push_back(on ? "tracking on" : "tracking off");
+    } else if (task == 1) {
+      if (!on) pose_active = false;
+      if (record && !on) calls.push_back("clear pose");
+    } else if (task >= 3 && task - 3 < static_cast<int>(extra_tasks.size())) {
+      extra_enabled.resize(extra_tasks.size(), -1);
+      extra_enabled[task - 3] = on ? 1 : 0;
+    }
+  }
+  void resetTaskEnabled(int task) override {
+    if (task >= 3 && task - 3 < static_cast<int>(extra_tasks.size())) {
+      extra_enabled.resize(extra_tasks.size(), -1);
+      extra_enabled[task - 3] = -1;
+    }
+  }
+  void setTaskTarget(int task, const TaskTarget& t) override {
+    if (task == 1 && t.kind == TaskTarget::Kind::kPose) {
+      pose_active = true;
+      pose = t.pose;
+      if (record) calls.push_back("pose");
+    } else if (task == 2) {
+      posture_active = t.kind == TaskTarget::Kind::kJoints;
+      if (posture_active) posture = t.q;
+      if (record) calls.push_back(posture_active ? "posture" : "clear posture");
+    }
+  }
+  void setTaskGains(int task, const TaskGains& g) override {
+    if (task == 0) gains_active = g.active;
+  }
+  void setTaskOffset(int task, const TrackingOffset& o) override {
+    if (task != 0) return;
     offset = o.target_in_observed;
     offset_planned = o.planned;
     if (record) calls.push_back("offset");
-  }
-  void setPoseTarget(const Isometry& p) override {
-    pose_active = true;
-    pose = p;
-    if (record) calls.push_back("pose");
-  }
-  void clearPoseTarget() override {
-    pose_active = false;
-    if (record) calls.push_back("clear pose");
-  }
-  void setPostureTarget(const Vector7& q) override {
-    posture_active = true;
-    posture = q;
-    if (record) calls.push_back("posture");
-  }
-  void clearPostureTarget() override {
-    posture_active = false;
-    if (record) calls.push_back("clear posture");
   }
   void setSpeedScale(double s) override {
     speed = s;
     if (record) calls.push_back("speed " + num(s));
   }
-  void setTrackingStiffness(double, double) override { gains_active = true; }
-  void clearTrackingStiffness() override { gains_active = false; }
   void relaxHandClearance(bool relaxed) override { hand_relaxed = relaxed; }
   void setGripper(double w, double) override {
     gripper_width = w;
