@@ -70,6 +70,26 @@ TEST(CollisionModel, WildcardMatchesEveryCapsuleOfALink) {
   EXPECT_GE(link5, 1);
 }
 
+// a rule names the robot description's link groups (config/robot.yaml
+// link_groups), which expand to their links as if the rule listed them
+TEST(CollisionModel, RobotDescriptionLinkGroupsExpandInRules) {
+  const Model& m = pandaModel();
+  ASSERT_FALSE(m.link_groups.empty());
+  for (const LinkGroup& g : m.link_groups) {
+    std::string patterns;
+    for (const std::string& p : g.patterns) patterns += (patterns.empty() ? "" : ", ") + p;
+    const CollisionModel by_group = buildCollisionModel(
+        m, parseCollisionConfig("pairs: [{name: t, robot: " + g.name + ", other: human_hand}]", "t.yaml"));
+    const CollisionModel by_links = buildCollisionModel(
+        m, parseCollisionConfig("pairs: [{name: t, robot: [" + patterns + "], other: human_hand}]", "t.yaml"));
+    ASSERT_EQ(by_group.numPairs(), by_links.numPairs()) << g.name;
+    EXPECT_GT(by_group.numPairs(), 0) << g.name;
+    for (int i = 0; i < by_group.numPairs(); ++i) EXPECT_EQ(by_group.pairLabel(i), by_links.pairLabel(i)) << g.name;
+  }
+  // a group of collision.yaml and a name that is neither still fail as before
+  EXPECT_NE(buildError("pairs: [{name: t, robot: no_such_group, other: table}]").find("no_such_group"), std::string::npos);
+}
+
 TEST(CollisionModel, ReadyPoseRespectsItsOwnSafetyDistances) {
   const Model& m = pandaModel();
   const CollisionModel cm = buildCollisionModel(m, loadCollisionConfig(defaultCollisionConfigPath()));

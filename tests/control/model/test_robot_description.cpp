@@ -96,6 +96,8 @@ TEST(RobotDescription, AnotherArmsNamesAreADescriptionChange) {
   for (std::string* s : {&other.base_link, &other.hand_link, &other.tcp_link, &other.ft_sensor_link})
     *s = replaceAll(*s, "panda_", "arm7_");
   for (std::string& s : other.gripper_links) s = replaceAll(s, "panda_", "arm7_");
+  for (LinkGroup& g : other.link_groups)
+    for (std::string& p : g.patterns) p = replaceAll(p, "panda_", "arm7_");
   other.capsule_prefix = "arm7_";
   const Model model = loadModel(urdf, other, 0.08);
 
@@ -112,6 +114,8 @@ TEST(RobotDescription, AnotherArmsNamesAreADescriptionChange) {
   }
   EXPECT_EQ(model.a_max, reference.a_max);
   EXPECT_EQ(model.q_max, reference.q_max);
+  ASSERT_EQ(model.link_groups.size(), reference.link_groups.size());
+  for (std::size_t i = 0; i < model.link_groups.size(); ++i) EXPECT_EQ(model.link_groups[i].name, reference.link_groups[i].name);
   EXPECT_EQ(model.inertias[kArmDofs].mass, reference.inertias[kArmDofs].mass);
 
   // the Panda's names do not fit the renamed URDF
@@ -133,11 +137,16 @@ TEST(RobotDescription, NamesThatAreNotInTheUrdfAreErrors) {
   d = defaultRobotDescription();
   d.fingertip_capsules = {"no_such_capsule"};
   EXPECT_THROW(loadModel(d, 0.08), InputError);
+  d = defaultRobotDescription();
+  d.link_groups.push_back(LinkGroup{"wrong", {"no_such_link"}});
+  EXPECT_THROW(loadModel(d, 0.08), InputError);
 }
 
 TEST(RobotDescription, StrictReading) {
-  expectDescriptionError(editedDescription("gripper:", "extra: 1\ngripper:"), "extra");
-  expectDescriptionError(editedDescription("gripper:", "grippers:"), "gripper");
+  expectDescriptionError(editedDescription("\ngripper:", "\nextra: 1\ngripper:"), "extra");
+  expectDescriptionError(editedDescription("\ngripper:", "\ngrippers:"), "gripper");
+  expectDescriptionError(editedDescription("\nlink_groups:", "\nlink_group:"), "link_group");
+  expectDescriptionError(editedDescription("  elbow: [panda_link4]", "  elbow: []"), "elbow");
   expectDescriptionError(editedDescription("base_link:", "base:"), "base");
   expectDescriptionError(editedDescription("[15.0, 7.5,", "[15.0, -7.5,"), "acceleration_limits");
   expectDescriptionError(editedDescription("[15.0, 7.5,", "[7.5,"), "acceleration_limits");
