@@ -1,16 +1,19 @@
 // Example task (docs/architecture.md): damp the wrist joint's velocity,
-// qddot_7 = -d qdot_7, as one least-squares row over the QP's variables.
+// qddot_7 = -d qdot_7, as one least-squares row over the QP's variables,
+// and its registry line: the type "wrist_damping" built from a YAML entry.
 #pragma once
 
+#include <memory>
 #include <string>
 
+#include "control/controller_registry.hpp"
 #include "control/formulation/task.hpp"
 
 namespace handover::examples {
 
 class WristDampingTask : public control::Task {
  public:
-  explicit WristDampingTask(double damping) : damping_(damping) {}
+  WristDampingTask(std::string name, double damping) : name_(std::move(name)), damping_(damping) {}
   const std::string& name() const override { return name_; }
   int rows() const override { return 1; }
   void compute(const control::ControlContext& ctx, Eigen::Ref<Eigen::MatrixXd> A,
@@ -23,8 +26,16 @@ class WristDampingTask : public control::Task {
   long calls = 0;  ///< cycles in which the QP asked for the rows
 
  private:
-  std::string name_ = "wrist_damping";
+  std::string name_;
   double damping_;  ///< 1/s
 };
+
+/// The registry line: an entry {type: wrist_damping, damping: 1/s, weight: w}.
+inline void registerWristDamping(control::ControllerRegistry& registry) {
+  registry.addTask("wrist_damping", [](const control::ElementArgs& a) {
+    const double damping = a.params.child("damping").checkRange(a.params.getDouble("damping"), 0.0, 1000.0);
+    return control::BuiltTask{std::make_shared<WristDampingTask>(a.name, damping), a.params.getDouble("weight", 1e-3)};
+  });
+}
 
 }  // namespace handover::examples

@@ -11,6 +11,7 @@
 #include "docs/examples/integrating_arm_driver.hpp"
 #include "docs/examples/pause_state.hpp"
 #include "docs/examples/wrist_damping_task.hpp"
+#include "control/controller_config.hpp"
 #include "fsm/core/registry.hpp"
 #include "fsm/core/state_machine.hpp"
 #include "fsm/handover/handover_fsm.hpp"
@@ -59,19 +60,67 @@ TEST(ArchitectureDoc, DriverExampleIsDrivenByTheCycle) {
   EXPECT_NE(cycle.machine().activePath().find("WaitForOffer"), std::string::npos);
 }
 
-// "A task": one class, added to the formulation before start(); the QP
-// asks for its rows in every cycle.
-TEST(ArchitectureDoc, TaskExampleJoinsEveryCycle) {
-  runtime::HandoverCycle cycle(runtime::defaultCycleSettings());
-  auto wrist = std::make_shared<examples::WristDampingTask>(20.0);
-  cycle.formulation().addTask(wrist, 1e-3);
+// "A task": a class, a registry line and a YAML entry in config/controller.yaml's
+// `tasks:` (here appended to the shipped file's list, as the document shows it).
+constexpr const char* kWristEntry = "{name: wrist_damping, type: wrist_damping, damping: 20.0, weight: 1.0e-3}";
+
+runtime::CycleSettings settingsWithEntry(const std::string& entry) {
+  runtime::CycleSettings settings = runtime::defaultCycleSettings();
+  examples::registerWristDamping(settings.registry);
+  const YamlReader file = YamlReader::loadFile(control::defaultControllerConfigPath());
+  YAML::Node doc = YAML::Clone(file.node());
+  doc["tasks"].push_back(YAML::Load(entry));
+  settings.controller = control::parseControllerConfig(YamlReader(doc, "controller.yaml", ""));
+  return settings;
+}
+
+// built from its entry, the QP asks for its rows in every cycle
+TEST(ArchitectureDoc, TaskExampleIsBuiltFromItsEntryAndJoinsEveryCycle) {
+  EXPECT_NE(readFile("docs/architecture.md").find(std::string("  - ") + kWristEntry), std::string::npos);
+  runtime::HandoverCycle cycle(settingsWithEntry(kWristEntry));
+  const int index = cycle.controller().taskIndex("wrist_damping");
+  ASSERT_GE(index, 0);
+  const auto& wrist = dynamic_cast<const examples::WristDampingTask&>(cycle.controller().task(index));
   const io::Vector7 q0 = cycle.controller().config().posture.target;
   examples::IntegratingArmDriver arm(cycle.controller().model(), q0);
   NobodyInView nobody;
   cycle.start(arm.state(), false);
   for (int k = 0; k < 200; ++k) arm.apply(cycle.step(k * 0.001, arm.state(), nobody));
-  EXPECT_TRUE(cycle.formulation().hasTask("wrist_damping"));
-  EXPECT_EQ(wrist->calls, 200);
+  EXPECT_EQ(wrist.calls, 200);
+  EXPECT_DOUBLE_EQ(cycle.controller().formulation().taskWeight("wrist_damping"), 1e-3);
+}
+
+// a state switches it by name through its handle, and its teardown (undo) gives it back
+TEST(ArchitectureDoc, TaskExampleIsSwitchedByNameAndGivenBack) {
+  runtime::HandoverCycle cycle(
+      settingsWithEntry("{name: wrist_damping, type: wrist_damping, damping: 20.0, enabled: false}"));
+  fsm::CommandLedger ledger(cycle.adapter());
+  fsm::ControllerHandle ctrl;
+  ctrl.bind(&ledger);
+  const int wrist = ctrl.taskHandle("wrist_damping");
+  ASSERT_GE(wrist, 0);
+  EXPECT_FALSE(cycle.controller().taskEnabled(wrist));
+  ctrl.setTaskEnabled(wrist, true);
+  EXPECT_TRUE(cycle.controller().taskEnabled(wrist));
+  ctrl.undo();
+  EXPECT_FALSE(cycle.controller().taskEnabled(wrist));
+  EXPECT_EQ(ctrl.taskHandle("no_such_task"), -1);
+}
+
+// the entry is read strictly: a parameter the factory does not read is refused
+TEST(ArchitectureDoc, TaskEntryWithAnUnknownKeyIsRefused) {
+  try {
+    runtime::HandoverCycle cycle(settingsWithEntry("{name: wrist_damping, type: wrist_damping, damping: 20.0, dampnig: 1}"));
+    ADD_FAILURE() << "an entry with an unknown key was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("dampnig"), std::string::npos) << e.what();
+  }
+  try {
+    runtime::HandoverCycle cycle(settingsWithEntry("{name: wrist_damping, type: wrist_dampnig, damping: 20.0}"));
+    ADD_FAILURE() << "an entry with an unknown type was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("wrist_dampnig"), std::string::npos) << e.what();
+  }
 }
 
 // "A state": registered next to the handover states and used in a machine;
