@@ -10,6 +10,7 @@
 #include "control/collision/collision_distances.hpp"
 #include "control/collision/collision_model.hpp"
 #include "control/collision/environment_from_human.hpp"
+#include "control/controller_registry.hpp"
 #include "control/model/algorithms.hpp"
 #include "control/model/model.hpp"
 #include "scenes/human/human_facts.hpp"
@@ -99,6 +100,18 @@ void validateScenario(const scenario::Scenario& sc) {
                                           " s must equal the simulator's step " + fmt(kSceneTimestep) +
                                           " s (the run steps both once per cycle)");
   }
+  // the QP is assembled from the config's entries: every type must be registered
+  // (the parameters are checked when the run builds the controller)
+  const control::ControllerRegistry registry = control::ControllerRegistry::shipped();
+  for (const control::ElementEntry& e : cfg.tasks)
+    if (!registry.hasTask(e.type))
+      scenario::failAt(sc.config_where, "in the controller config: task '" + e.name + "' has the unknown type '" +
+                                            e.type + "'");
+  for (const control::ElementEntry& e : cfg.constraints)
+    if (!registry.hasConstraint(e.type))
+      scenario::failAt(sc.config_where, "in the controller config: constraint '" + e.name +
+                                            "' has the unknown type '" + e.type + "'");
+
   // a latency beyond the estimator's max_latency (perception.yaml) is a
   // valid scenario (the contract allows up to 1 s): the robot then sees only
   // stale samples, a sensing fault the run reports, not bad input

@@ -122,6 +122,18 @@ TEST(Validation, ConfigFilesThatAreNotControllerConfigs) {
   expectError(fsm, "config", "config:", "fsm.yaml");
 }
 
+TEST(Validation, ControllerEntriesOfUnknownTypes) {
+  // the shipped controller config with one more task entry, of a type nobody registered
+  std::string text = readText(std::string(HANDOVER_SOURCE_DIR) + "/config/controller.yaml");
+  const std::string last = "  - {name: pose, type: pose, enabled: false}";
+  ASSERT_NE(text.find(last), std::string::npos);
+  text.replace(text.find(last), last.size(), last + "\n  - {name: wrist, type: no_such_task}");
+  const fs::path cfg = fs::path(::testing::TempDir()) / "validate_unknown_task.yaml";
+  std::ofstream(cfg) << text;
+  const std::string sc = derived("seed: 1", "seed: 1\nconfig: " + cfg.string());
+  expectError(sc, "config", "config:", "no_such_task");
+}
+
 // `handover batch --vary` runs generated variants: each must pass the same
 // validation, or the batch would report inputs that `check` never saw
 TEST(Validation, GeneratedVariantsOfShippedScenariosPass) {

@@ -101,3 +101,38 @@ TEST(ControllerConfig, DisturbanceSectionIsReadAndChecked) {
   expectError("disturbance:\n  compensation: always\n", "disturbance.compensation", 2);
   expectError("disturbance:\n  max_torque_fraction: 2\n", "disturbance.max_torque_fraction", 2);
 }
+
+// tasks: / constraints: lists, read strictly; what a missing list means
+TEST(ControllerConfig, TaskAndConstraintEntries) {
+  const ControllerConfig shipped = loadControllerConfig(defaultControllerConfigPath());
+  const ControllerConfig none = loadControllerConfig(writeTemp("ctl_empty.yaml", "period: 0.001\n"));
+  ASSERT_EQ(shipped.tasks.size(), none.tasks.size());
+  for (std::size_t i = 0; i < shipped.tasks.size(); ++i) {
+    EXPECT_EQ(shipped.tasks[i].name, none.tasks[i].name);
+    EXPECT_EQ(shipped.tasks[i].type, none.tasks[i].type);
+    EXPECT_EQ(shipped.tasks[i].enabled, none.tasks[i].enabled);
+  }
+  ASSERT_EQ(shipped.constraints.size(), none.constraints.size());
+  for (std::size_t i = 0; i < shipped.constraints.size(); ++i)
+    EXPECT_EQ(shipped.constraints[i].type, none.constraints[i].type);
+  expectError("tasks:\n  - {name: a, type: posture}\n  - {name: a, type: pose}\n", "name", 3);
+  expectError("tasks:\n  - {name: a}\n", "type", 2);
+  expectError("constraints: joint_position\n", "constraints", 1);
+}
+
+// a config holds its entries by pointer: assigning one config over another
+// leaves the first one's document as it was (yaml-cpp's Node assignment
+// would rebind the node it referred to)
+TEST(ControllerConfig, AssignmentLeavesTheOtherDocumentAlone) {
+  const YamlReader a = YamlReader::loadString("tasks:\n  - {name: observation, type: observation}\n"
+                                              "  - {name: tracking, type: trajectory_tracking}\n", "a.yaml");
+  const YamlReader b = YamlReader::loadString("tasks:\n  - {name: obs2, type: observation}\n"
+                                              "  - {name: track2, type: trajectory_tracking}\n", "b.yaml");
+  ControllerConfig ca = parseControllerConfig(a);
+  const ControllerConfig cb = parseControllerConfig(b);
+  ca = cb;
+  EXPECT_EQ(ca.tasks[0].name, "obs2");
+  const ControllerConfig again = parseControllerConfig(YamlReader(a.node(), "a.yaml", ""));
+  EXPECT_EQ(again.tasks[0].name, "observation");
+  EXPECT_EQ(again.tasks[1].name, "tracking");
+}
