@@ -27,6 +27,8 @@ ScopedCommands allChanged() {
   v.gains.translation = 6.0;
   v.gains.orientation = 12.0;
   v.hand_clearance_relaxed = true;
+  v.task_switches.mask = 1u << 3;  // a task beyond tracking, pose and posture, switched on
+  v.task_switches.on = 1u << 3;
   return v;
 }
 
@@ -43,6 +45,7 @@ void changeThroughHandle(ControllerHandle& h, Channel c) {
     case Channel::kSpeedScale: h.setSpeedScale(v.speed_scale); break;
     case Channel::kGains: h.setTrackingStiffness(v.gains.translation, v.gains.orientation); break;
     case Channel::kHandClearance: h.relaxHandClearance(v.hand_clearance_relaxed); break;
+    case Channel::kTaskSwitches: h.setTaskEnabled(3, true); break;
     case Channel::kCount: break;
   }
 }
