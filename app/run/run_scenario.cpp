@@ -14,6 +14,7 @@
 #include "app/report/output_files.hpp"
 #include "app/run/run_log.hpp"
 #include "app/run/world_setup.hpp"
+#include "app/validate/person_trunk.hpp"
 #include "scenes/scenario/object_geometry.hpp"
 #include "app/validate/scenario_validation.hpp"
 #include "config/input_error.hpp"
@@ -71,6 +72,11 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   const scenario::BodyDimensions body = person.body();
   cs.forearm_length = body.forearm;
   cs.upper_arm_length = body.upper_arm;
+  // the trunk: sized from the stature, placed from the tracked shoulder and the declared stand
+  cs.collision.person.trunk = personTrunkFor(body);
+  cs.stand.declared = true;
+  cs.stand.yaw = sc.human.stand_yaw;
+  cs.stand.shoulder_side = (sc.human.hand == scenario::HandSide::Right ? 1.0 : -1.0) * body.shoulder_offset;
   runtime::HandoverCycle cycle(cs);
   const control::Controller& controller = cycle.controller();
   const runtime::ControllerAdapter& adapter = cycle.adapter();
