@@ -60,7 +60,7 @@ struct TableSettings {
 /// The person's trunk in the torso frame (origin on the floor under the body
 /// centre, x forward, z up). Not read from collision.yaml: the runtime sizes
 /// it from the scenario's stature, as the simulated scene does
-/// (scenes/scenario/body_dimensions.hpp). Defaults: a 1.75 m person.
+/// (the scenario body dimensions, app/validate/person_trunk.hpp). Defaults: a 1.75 m person.
 struct PersonTrunk {
   Vector3 torso_size = Vector3(0.22, 0.38, 0.49);  ///< full edges, m
   double torso_centre = 1.1725;                     ///< box centre above the floor, m
