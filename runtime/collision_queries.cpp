@@ -26,7 +26,9 @@ double personDistance(const control::CollisionModel& cm, const control::Collisio
     if ((part == PersonPart::kHand && !is_hand) || (part == PersonPart::kArm && is_hand)) continue;
     const control::CollisionBody& robot = cm.bodies[pair.robot_body];
     if (skip_fingertips && isFingertipCapsule(robot)) continue;
-    if (part == PersonPart::kArm && isGripperCapsule(robot)) continue;
+    // the gripper near the person's forearm is the handover itself; near the trunk it is not
+    if (part == PersonPart::kArm && isGripperCapsule(robot) && other.kind != control::CollisionBodyKind::kHumanTrunk)
+      continue;
     d = std::min(d, res.distance + pair.margin);
   }
   return d;

@@ -24,9 +24,11 @@ bool isFingertipCapsule(const control::CollisionBody& body);
 /// Smallest robot-person distance over the active pairs of `cd` (margins
 /// added back: the true clearance), skipping pairs of rule `skip_rule` (-1:
 /// none) and, when `skip_fingertips`, the fingertips (they hold the shared
-/// object). The arm part leaves out the gripper: near the person's wrist it
-/// is the handover itself, and its clearance is the collision constraint's
-/// job. Infinity when no pair counts.
+/// object). The arm part (everything but the hand: forearm, upper arm and the
+/// trunk) leaves out the gripper against the forearm and upper arm: near the
+/// person's wrist it is the handover itself, and its clearance is the
+/// collision constraint's job; against the trunk the gripper counts.
+/// Infinity when no pair counts.
 double personDistance(const control::CollisionModel& cm, const control::CollisionData& cd, int skip_rule,
                       bool skip_fingertips, PersonPart part = PersonPart::kAll);
 

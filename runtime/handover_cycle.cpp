@@ -11,6 +11,8 @@
 namespace handover::runtime {
 
 namespace {
+
+constexpr double kFloorZ = -0.75;  // m, the floor under the person (design notes 1)
 double clip(double v) { return std::isfinite(v) ? std::min(v, 2.0) : 2.0; }
 }  // namespace
 
@@ -130,6 +132,18 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   env.upper_arm = est.human.upper_arm;
   env.forearm_length = settings_.forearm_length;
   env.upper_arm_length = settings_.upper_arm_length;
+  if (settings_.stand.declared) {
+    // the trunk is not tracked: it stands under the tracked shoulder, facing
+    // the declared way, on the floor (the torso frame of io::HumanBodyPoses)
+    const double yaw = settings_.stand.yaw;
+    const Eigen::Vector3d right(std::sin(yaw), -std::cos(yaw), 0.0);
+    Eigen::Vector3d base = est.human.upper_arm.translation() - settings_.stand.shoulder_side * right;
+    base.z() = kFloorZ;
+    env.torso = Eigen::Isometry3d::Identity();
+    env.torso.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    env.torso.translation() = base;
+    env.trunk_valid = env.person_valid;
+  }
   env.hand_velocity = hand_vel_.velocity();
   env.object_valid = est.object.valid && !est.object.stale && est.object.holder == perception::ObjectHolder::Person;
   env.object = est.object.pose;

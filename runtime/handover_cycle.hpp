@@ -95,6 +95,18 @@ struct CycleSettings {
   double gripper_force = 40.0;                ///< N, grasp force limit at start (params.gripper)
   double forearm_length = 0.27;               ///< m, the person's forearm capsule (collision)
   double upper_arm_length = 0.33;             ///< m, the person's upper-arm capsule (collision)
+  /// Where the person stands, as declared (scenario `human.stand`): trackers
+  /// report the hand, forearm and upper arm only, so the trunk (legs, torso,
+  /// head; sized by controller collision.person.trunk) is placed from the
+  /// tracked shoulder (the upper arm's origin) and this facing. Without a
+  /// declared stand the trunk is not in the collision scene.
+  struct PersonStand {
+    bool declared = false;
+    double yaw = 3.14159265358979;  ///< rad about z; pi faces the robot from +x
+    /// m, the tracked shoulder sideways from the body midline, toward the
+    /// person's right (+) or left (-): +shoulder_offset for a right hand
+    double shoulder_side = 0.175;
+  } stand;
   /// params.ft.gravity_sign: -1 when io::ArmState::wrench is what the hand
   /// exerts on the flange (the simulator), +1 for the opposite convention.
   double ft_gravity_sign = -1.0;

@@ -15,11 +15,14 @@ bool OutcomeJudge::heldByRobot(const StepFacts& f) const {
 }
 
 void OutcomeJudge::observe(const StepFacts& f) {
+  if (f.time > last_time_) step_time_ = f.time - last_time_;
   last_time_ = f.time;
   const bool robot_holds = heldByRobot(f);
 
-  // contacts: count onsets, so one long touch is one contact
-  const bool touching = f.robot_human_contacts > 0;
+  // contacts: count onsets, so one long touch is one contact; a penetration
+  // of the person's true body counts even when the simulator lists no contact
+  const bool touching = f.robot_human_contacts > 0 || f.human_penetration;
+  penetration_steps_ += f.human_penetration ? 1 : 0;
   if (touching && !in_contact_) ++contacts_;
   in_contact_ = touching;
   min_dist_ = std::min(min_dist_, f.min_human_distance);
@@ -87,6 +90,7 @@ RunSummary OutcomeJudge::finish(bool fsm_done, const std::string& fsm_outcome, i
   r.hand_still_to_grasp = still_to_grasp_;
   r.min_human_distance = min_dist_ >= 1e8 ? std::nan("") : min_dist_;
   r.human_contacts = contacts_;
+  r.penetration_time = penetration_steps_ * step_time_;
   r.object_dropped = dropped_;
   if (dropped_) {
     r.drop_time = drop_time_;

@@ -17,7 +17,10 @@ namespace handover::app {
 struct StepFacts {
   double time = 0.0;                        ///< s
   // simulator ground truth
-  int robot_human_contacts = 0;             ///< contact pairs robot-person this step
+  int robot_human_contacts = 0;             ///< contact pairs robot-person this step (simulator's list)
+  /// a robot geom penetrates the person's true body (hand, arms, torso, legs,
+  /// head) by MuJoCo's geometry this step, whether or not the contact list has it
+  bool human_penetration = false;
   bool left_finger_on_object = false;
   bool right_finger_on_object = false;
   bool object_on_table = false;
@@ -28,7 +31,7 @@ struct StepFacts {
   Eigen::Vector3d hand_pos = Eigen::Vector3d::Zero();     ///< person's grip point, world, m
   double hand_speed = 0.0;                  ///< m/s
   double finger_width = 0.0;                ///< m, total opening
-  double min_human_distance = 1e9;          ///< m, robot links to person (shared-object fingers excluded)
+  double min_human_distance = 1e9;          ///< m, true clearance robot geoms to person (shared-object fingers excluded)
   double grasp_pos_error = 0.0;             ///< m, TCP to the true grasp frame
   double grasp_rot_error_deg = 0.0;         ///< deg, TCP to the true grasp frame
   // controller side
@@ -75,6 +78,8 @@ class OutcomeJudge {
   double drop_time_ = 0.0;       // s, when the drop was first seen
   std::string drop_reason_;      // table | floor | fell
   int contacts_ = 0;
+  int penetration_steps_ = 0;
+  double step_time_ = 0.0;          // s, last step's length (for penetration_time)
   bool in_contact_ = false;
   double min_dist_ = 1e9;
   LimitViolations lim_;

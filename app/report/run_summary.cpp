@@ -19,7 +19,8 @@ std::string RunSummary::toJson() const {
   w.value("handovers", handovers).value("aborts", aborts).value("retries", retries);
   w.value("time_to_grasp", time_to_grasp).value("hand_still_to_grasp", hand_still_to_grasp);
   w.value("total_time", total_time).value("min_human_distance", min_human_distance);
-  w.value("human_contacts", human_contacts).value("object_dropped", object_dropped);
+  w.value("human_contacts", human_contacts).value("penetration_time", penetration_time);
+  w.value("object_dropped", object_dropped);
   w.value("drop_time", drop_time);
   w.value("drop_reason", drop_reason);  // "" when nothing dropped
   w.beginObject("limit_violations")

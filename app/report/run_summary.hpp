@@ -26,8 +26,9 @@ struct RunSummary {
   std::optional<double> time_to_grasp;        ///< s
   std::optional<double> hand_still_to_grasp;  ///< s, negative: grasped while the hand moved
   std::optional<double> total_time;           ///< s, start to handover complete and retracted
-  double min_human_distance = 0.0;            ///< m
-  int human_contacts = 0;
+  double min_human_distance = 0.0;            ///< m, true clearance (MuJoCo geometry; shared-object fingers excluded)
+  int human_contacts = 0;                     ///< touches: simulator contacts or true-geometry penetrations (onsets)
+  double penetration_time = 0.0;              ///< s, time a robot geom was inside the person's true body
   bool object_dropped = false;
   std::optional<double> drop_time;            ///< s, when the drop was first seen (null if none)
   std::string drop_reason;                    ///< table | floor | fell (nobody held it and it fell), "" if none

@@ -14,6 +14,7 @@
 #include "app/report/output_files.hpp"
 #include "app/run/run_log.hpp"
 #include "app/run/world_setup.hpp"
+#include "app/validate/person_trunk.hpp"
 #include "scenes/scenario/object_geometry.hpp"
 #include "app/validate/scenario_validation.hpp"
 #include "config/input_error.hpp"
@@ -46,6 +47,10 @@ using runtime::tableAndSelfDistance;
 
 double clip(double v) { return std::isfinite(v) ? std::min(v, 2.0) : 2.0; }
 
+// m: the judge's true-clearance query stops here; a person farther away reads
+// as "far" (infinite, as before: null in summary.json, 2 in log.csv)
+constexpr double kClearanceCap = 0.5;
+
 }  // namespace
 
 RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
@@ -67,6 +72,11 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   const scenario::BodyDimensions body = person.body();
   cs.forearm_length = body.forearm;
   cs.upper_arm_length = body.upper_arm;
+  // the trunk: sized from the stature, placed from the tracked shoulder and the declared stand
+  cs.collision.person.trunk = personTrunkFor(body);
+  cs.stand.declared = true;
+  cs.stand.yaw = sc.human.stand_yaw;
+  cs.stand.shoulder_side = (sc.human.hand == scenario::HandSide::Right ? 1.0 : -1.0) * body.shoulder_offset;
   runtime::HandoverCycle cycle(cs);
   const control::Controller& controller = cycle.controller();
   const runtime::ControllerAdapter& adapter = cycle.adapter();
@@ -217,14 +227,18 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
                      controller.lastFallbackReason(), controller.fallbackCount());
       const control::Vector7& tau = cmd.tau;
 
-      // judge on ground truth
+      // judge on ground truth: the simulated robot's and person's own geometry
+      // (hand, arms, torso, legs, head), at the state the contact list describes
       const control::CollisionEnvironment truth_env = control::environmentFromHuman(hout.poses);
       control::updateCollisions(truth_cm, truth_cd, controller.model(), controller.data(), truth_env);
       const bool a_finger_on = contacts.left_finger_on_object || contacts.right_finger_on_object;
-      const double d_human = personDistance(truth_cm, truth_cd, -1, a_finger_on);
+      const sim::PersonClearance clearance = sim.personClearance(kClearanceCap);
+      const double d_near = a_finger_on ? clearance.without_fingers : clearance.all;
+      const double d_human = d_near < kClearanceCap ? d_near : INFINITY;
       StepFacts f;
       f.time = t;
       f.robot_human_contacts = contacts.robot_human;
+      f.human_penetration = clearance.all < 0.0;
       f.left_finger_on_object = contacts.left_finger_on_object;
       f.right_finger_on_object = contacts.right_finger_on_object;
       f.object_on_table = contacts.object_on_table;

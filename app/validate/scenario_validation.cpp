@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "app/validate/person_trunk.hpp"
 #include "config/input_error.hpp"
 #include "config/yaml_reader.hpp"
 #include "control/collision/collision_config.hpp"
@@ -54,6 +55,7 @@ const char* kindName(control::CollisionBodyKind k) {
     case control::CollisionBodyKind::kHumanForearm: return "the person's forearm";
     case control::CollisionBodyKind::kHumanUpperArm: return "the person's upper arm";
     case control::CollisionBodyKind::kObject: return "the object the person holds out";
+    case control::CollisionBodyKind::kHumanTrunk: return "the person's body (torso, legs or head)";
   }
   return "?";
 }
@@ -122,10 +124,11 @@ void validateScenario(const scenario::Scenario& sc) {
   // the start posture clears the table, the arm itself and the person at t = 0
   const control::Model model = control::loadModel(std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf");
   control::Data data(model);
-  const control::CollisionConfig ccfg = control::loadCollisionConfig(control::defaultCollisionConfigPath());
+  control::CollisionConfig ccfg = control::loadCollisionConfig(control::defaultCollisionConfigPath());
+  human::ScriptedHuman person(sc);
+  ccfg.person.trunk = personTrunkFor(person.body());
   const control::CollisionModel cm = control::buildCollisionModel(model, ccfg);
   control::CollisionData cd(cm);
-  human::ScriptedHuman person(sc);
   const human::HumanOutput& h0 = person.step(0.0, human::HumanFacts{});
   control::computeAll(model, data, q0, control::Vector7::Zero());
   control::updateCollisions(cm, cd, model, data, control::environmentFromHuman(h0.poses));

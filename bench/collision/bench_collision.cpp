@@ -1,6 +1,6 @@
 // BM_Distances: one control cycle of the collision stage (all pairs of
-// config/collision.yaml: robot vs table, robot vs person, self pairs) with
-// the person's arm next to the robot. Target: median <= 15 us.
+// config/collision.yaml: robot vs table, robot vs person (hand, arm, trunk),
+// self pairs) with the person's arm next to the robot. Target: median <= 15 us.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -47,6 +47,10 @@ CollisionEnvironment personNear(const Vector3& tcp) {
   env.forearm_length = (wrist - elbow).norm();
   env.upper_arm = along(shoulder, elbow);
   env.upper_arm_length = (elbow - shoulder).norm();
+  // the trunk under the shoulder (a right arm: the midline 0.175 m to its left), facing the robot
+  env.trunk_valid = true;
+  env.torso.linear() = Eigen::AngleAxisd(M_PI, Vector3::UnitZ()).toRotationMatrix();
+  env.torso.translation() = Vector3(shoulder.x(), shoulder.y() - 0.175, -0.75);
   return env;
 }
 

@@ -111,7 +111,7 @@ Isometry readPose(const YamlReader& r) {
 }
 
 bool isPersonName(const std::string& pattern) {
-  for (const char* n : {"human_hand", "human_forearm", "human_upper_arm"})
+  for (const char* n : {"human_hand", "human_forearm", "human_upper_arm", "human_torso", "human_legs", "human_head"})
     if (globMatch(pattern, n)) return true;
   return false;
 }
@@ -148,6 +148,20 @@ CollisionConfig parse(const YamlReader& root) {
     if (auto c = p->optionalChild("upper_arm_radius")) cfg.person.upper_arm_radius = c->checkRange(c->asDouble(), 0.001, 0.5);
     if (auto c = p->optionalChild("margin")) cfg.person.margin = c->checkRange(c->asDouble(), 0.0, 0.5);
     p->finish();
+  }
+
+  if (auto e = root.optionalChild("sensing_error")) {
+    SensingError& se = cfg.sensing_error;
+    if (auto c = e->optionalChild("calibration")) se.calibration = c->checkRange(c->asDouble(), 0.0, 0.2);
+    if (auto c = e->optionalChild("noise")) se.noise = c->checkRange(c->asDouble(), 0.0, 0.1);
+    if (auto c = e->optionalChild("noise_sigmas")) se.noise_sigmas = c->checkRange(c->asDouble(), 0.0, 10.0);
+    if (auto c = e->optionalChild("latency")) se.latency = c->checkRange(c->asDouble(), 0.0, 1.0);
+    if (auto c = e->optionalChild("person_speed")) se.person_speed = c->checkRange(c->asDouble(), 0.0, 5.0);
+    if (se.budget() > 0.2) {
+      e->fail("the sensing budget calibration + noise_sigmas * noise + latency * person_speed = " +
+              std::to_string(se.budget()) + " m exceeds 0.2 m: the robot could not come near the person");
+    }
+    e->finish();
   }
 
   Groups groups;

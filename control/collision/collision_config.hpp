@@ -7,7 +7,8 @@
 //   capsule name; "*" and "?" are wildcards ("*link5*", "*finger");
 //   "table" (a box whose top is the plane z = 0);
 //   "human_hand" (a box in the hand frame), "human_forearm",
-//   "human_upper_arm" (capsules along the segment's z axis).
+//   "human_upper_arm" (capsules along the segment's z axis), "human_torso",
+//   "human_legs" (boxes in the torso frame), "human_head" (a sphere).
 // A list item that is the name of a group expands to that group's patterns.
 // Units: m, m/s.
 #pragma once
@@ -56,12 +57,26 @@ struct TableSettings {
   Vector3 center_xy = Vector3(0.3, 0.0, 0.0);  ///< x, y of the box centre, m (z unused)
 };
 
+/// The person's trunk in the torso frame (origin on the floor under the body
+/// centre, x forward, z up). Not read from collision.yaml: the runtime sizes
+/// it from the scenario's stature, as the simulated scene does
+/// (the scenario body dimensions, app/validate/person_trunk.hpp). Defaults: a 1.75 m person.
+struct PersonTrunk {
+  Vector3 torso_size = Vector3(0.22, 0.38, 0.49);  ///< full edges, m
+  double torso_centre = 1.1725;                     ///< box centre above the floor, m
+  Vector3 legs_size = Vector3(0.18, 0.32, 0.9275);  ///< full edges, m
+  double legs_centre = 0.46375;                     ///< m
+  double head_radius = 0.105;                       ///< m
+  double head_centre = 1.6275;                      ///< m
+};
+
 struct PersonSettings {
   Vector3 hand_size = Vector3(0.10, 0.09, 0.05);  ///< full edges of the hand box, m
   Isometry hand_offset = Isometry::Identity();     ///< box centre in the hand (grip point) frame
   double forearm_radius = 0.045;    ///< m
   double upper_arm_radius = 0.055;  ///< m
   double margin = 0.03;             ///< m, default extra clearance for sensor noise
+  PersonTrunk trunk;                ///< legs, torso, head (set by the runtime)
 };
 
 /// The object the person holds out, as an obstacle while the gripper
@@ -71,6 +86,20 @@ struct PersonSettings {
 struct ObjectShapeSettings {
   ShapeSpec shape = ShapeSpec{};   ///< core: a box, or a segment along z (length 0: a sphere)
   double radius = 0.03;            ///< m, swept around a segment core (0 for a box)
+};
+
+/// The pose sensor's error that every pair with the person budgets for
+/// (collision.yaml `sensing_error`, docs/collision.md "Sensing budget"): a
+/// tracker off by at most this much still leaves the pair's sDist to the true
+/// person. m, s, m/s.
+struct SensingError {
+  double calibration = 0.0;   ///< m, constant offset of the tracked poses (extrinsic calibration)
+  double noise = 0.0;         ///< m, standard deviation of one position sample
+  double noise_sigmas = 3.0;  ///< standard deviations of noise the budget covers
+  double latency = 0.0;       ///< s, delay of the poses the controller acts on
+  double person_speed = 0.0;  ///< m/s, the person's speed near the robot during that delay
+  /// m, the clearance added to the margin of every robot-person pair
+  double budget() const { return calibration + noise_sigmas * noise + latency * person_speed; }
 };
 
 struct CollisionConfig {
@@ -87,6 +116,7 @@ struct CollisionConfig {
   DamperSettings defaults;
   TableSettings table;
   PersonSettings person;
+  SensingError sensing_error;       ///< added to every robot-person pair's margin
   ObjectShapeSettings object;
   std::vector<PairRule> pairs;
 };

@@ -56,6 +56,10 @@ void updatePoses(const CollisionModel& cm, CollisionData& cd, const Data& data, 
   };
   segment(cm.human_forearm, env.forearm, env.forearm_length, env.forearm_velocity);
   segment(cm.human_upper_arm, env.upper_arm, env.upper_arm_length, env.upper_arm_velocity);
+  for (int idx : {cm.human_torso, cm.human_legs, cm.human_head}) {
+    cd.body_pose[idx] = env.torso * cm.bodies[idx].local;
+    cd.body_twist[idx].setZero();  // a person standing: the trunk's motion is not estimated
+  }
   cd.body_pose[cm.object] = env.object * cm.bodies[cm.object].local;
   cd.body_twist[cm.object] =
       shiftTwist(env.object_velocity, env.object.translation(), cd.body_pose[cm.object].translation());
@@ -90,6 +94,7 @@ void updateCollisions(const CollisionModel& cm, CollisionData& cd, const Model& 
     const CollisionBody& a = cm.bodies[ia];
     const CollisionBody& o = cm.bodies[io];
     if (o.isPerson() && !env.person_valid) continue;
+    if (o.kind == CollisionBodyKind::kHumanTrunk && !env.trunk_valid) continue;
     if (o.kind == CollisionBodyKind::kObject && !env.object_valid) continue;
 
     // broad phase: skip pairs that cannot come within reach of the damper

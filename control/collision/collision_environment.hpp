@@ -13,6 +13,13 @@ struct CollisionEnvironment {
   Isometry hand = Isometry::Identity();       ///< grip point frame in the world (design notes 1)
   Isometry forearm = Isometry::Identity();    ///< origin at the elbow, z along elbow -> wrist
   Isometry upper_arm = Isometry::Identity();  ///< origin at the shoulder, z along shoulder -> elbow
+  /// The trunk (legs, torso box, head): origin on the floor under the body
+  /// centre, x forward, z up (io::HumanBodyPoses::torso). Its shapes are sized
+  /// by CollisionConfig::person.trunk. A tracker that does not see the trunk
+  /// gets it derived from the shoulder and the declared stand (runtime).
+  Isometry torso = Isometry::Identity();
+  /// false: the trunk is not known (no stand declared); its pairs give no rows.
+  bool trunk_valid = false;
   double forearm_length = 0.27;               ///< m, elbow to wrist
   double upper_arm_length = 0.33;             ///< m, shoulder to elbow
   /// Optional twists [v of the frame origin; omega], world axes, m/s and rad/s.

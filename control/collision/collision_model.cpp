@@ -110,6 +110,21 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
   seg.length = 0.33;
   cm.human_upper_arm = addEnv("human_upper_arm", CollisionBodyKind::kHumanUpperArm, seg,
                               cfg.person.upper_arm_radius, Isometry::Identity());
+  // the trunk, in the torso frame (floor under the body centre)
+  const PersonTrunk& trunk = cfg.person.trunk;
+  if (!(trunk.torso_size.minCoeff() > 0.0) || !(trunk.legs_size.minCoeff() > 0.0) || !(trunk.head_radius > 0.0))
+    throw InputError(cfg.file + ": the person's trunk sizes must be > 0");
+  auto above = [](double z) {
+    Isometry X = Isometry::Identity();
+    X.translation().z() = z;
+    return X;
+  };
+  box.size = trunk.torso_size;
+  cm.human_torso = addEnv("human_torso", CollisionBodyKind::kHumanTrunk, box, 0.0, above(trunk.torso_centre));
+  box.size = trunk.legs_size;
+  cm.human_legs = addEnv("human_legs", CollisionBodyKind::kHumanTrunk, box, 0.0, above(trunk.legs_centre));
+  seg.length = 0.0;  // a sphere: a point core with a radius
+  cm.human_head = addEnv("human_head", CollisionBodyKind::kHumanTrunk, seg, trunk.head_radius, above(trunk.head_centre));
   // cores are centred on their frame, as the object frame is on its shape
   cm.object = addEnv("object", CollisionBodyKind::kObject, cfg.object.shape,
                      cfg.object.shape.kind == ShapeSpec::Kind::kBox ? 0.0 : cfg.object.radius, Isometry::Identity());
@@ -180,7 +195,11 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
         p.robot_body = a;
         p.other_body = o;
         p.damper = rule.damper;
-        p.margin = rule.margin;
+        // the person is sensed: the pair also budgets the sensor's declared
+        // error, except while the gripper shares the object with the person's
+        // hand (`sharing` rules: there robot and hand meet at the object by design)
+        const bool budget = ob.isPerson() && rule.scope != RuleScope::kSharing;
+        p.margin = rule.margin + (budget ? cfg.sensing_error.budget() : 0.0);
         cm.pairs.push_back(p);
       }
     }

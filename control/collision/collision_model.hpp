@@ -3,7 +3,7 @@
 //
 // Bodies: one per robot capsule (Model::capsules, moved by its body), plus the
 // table (static box, top face at z = 0) and the person's hand (box), forearm
-// and upper arm (capsules). Each body is a "core" shape (segment or box) with
+// and upper arm (capsules), torso and legs (boxes) and head (sphere). Each body is a "core" shape (segment or box) with
 // a radius around it; distances are core distance minus radii minus margin.
 // Pairs: every (robot capsule, other body) pair produced by the config's pair
 // rules, with the rule's damper settings and margin. Adjacent and same-body
@@ -19,7 +19,10 @@
 
 namespace handover::control {
 
-enum class CollisionBodyKind { kRobot, kTable, kHumanHand, kHumanForearm, kHumanUpperArm, kObject };
+enum class CollisionBodyKind {
+  kRobot, kTable, kHumanHand, kHumanForearm, kHumanUpperArm, kObject,
+  kHumanTrunk  ///< legs, torso or head: fixed shapes in the torso frame
+};
 
 struct CollisionBody {
   std::string name;                 ///< robot: capsule name; else "table", "human_hand", ...
@@ -36,7 +39,7 @@ struct CollisionBody {
   bool isRobot() const { return kind == CollisionBodyKind::kRobot; }
   bool isPerson() const {
     return kind == CollisionBodyKind::kHumanHand || kind == CollisionBodyKind::kHumanForearm ||
-           kind == CollisionBodyKind::kHumanUpperArm;
+           kind == CollisionBodyKind::kHumanUpperArm || kind == CollisionBodyKind::kHumanTrunk;
   }
 };
 
@@ -45,7 +48,9 @@ struct CollisionPair {
   int robot_body = 0;      ///< index into bodies (always a robot capsule)
   int other_body = 0;      ///< index into bodies (robot capsule, table or person)
   DamperSettings damper;
-  double margin = 0.0;     ///< m, extra clearance subtracted from the distance
+  /// m, extra clearance subtracted from the distance: the rule's margin, plus
+  /// the sensing budget (CollisionConfig::sensing_error) for a person body
+  double margin = 0.0;
 };
 
 struct CollisionModel {
@@ -56,6 +61,7 @@ struct CollisionModel {
   std::vector<RuleScope> rule_scope;       ///< when each rule is on (collision_config.hpp)
   double broadphase_margin = 0.05;         ///< m
   int table = -1, human_hand = -1, human_forearm = -1, human_upper_arm = -1, object = -1;  ///< body indices
+  int human_torso = -1, human_legs = -1, human_head = -1;                                  ///< body indices (trunk)
 
   /// Index of a rule, or -1.
   int ruleIndex(const std::string& name) const;

@@ -14,6 +14,8 @@ inline CollisionEnvironment environmentFromHuman(const io::HumanBodyPoses& perso
   env.hand = person.hand;
   env.forearm = person.forearm;
   env.upper_arm = person.upper_arm;
+  env.torso = person.torso;
+  env.trunk_valid = valid;
   env.forearm_length = person.forearm_length;
   env.upper_arm_length = person.upper_arm_length;
   return env;

@@ -12,6 +12,10 @@ BodyDimensions bodyDimensionsFromHeight(double height) {
   b.wrist_to_grip = 0.043 * height;
   b.shoulder_height = 0.818 * height;
   b.shoulder_offset = 0.100 * height;
+  b.hip_height = 0.53 * height;
+  b.torso_top = 0.81 * height;
+  b.head_centre = 0.93 * height;
+  b.head_radius = 0.06 * height;
   return b;
 }
 

@@ -10,6 +10,10 @@
 //   wrist to grip point           0.043 H  (approx) the palm centre, 0.4 of the hand length
 //   shoulder height above floor   0.818 H  (approx) usual anthropometric ratio
 //   shoulder joint off midline    0.100 H  (approx) a little inside half the biacromial breadth
+// Trunk (the simulated person's torso body, scenes/handover_scene.xml; heights above the floor):
+//   hip (legs box top)            0.530 H  torso box from the hip to 0.810 H
+//   head centre                   0.930 H  head sphere radius 0.06 H
+//   torso box depth x width       0.22 x 0.38 m; legs box 0.18 x 0.32 m (fixed, not scaled)
 // A 1.75 m person: upper arm 0.359, forearm 0.284, wrist-grip 0.075, reach
 // (shoulder to grip point, arm straight) 0.718, shoulder 0.68 above the table.
 // All functions are pure and real-time safe.
@@ -30,6 +34,15 @@ struct BodyDimensions {
   double wrist_to_grip = 0.0;       ///< wrist to the grip point (palm centre), m
   double shoulder_height = 0.0;     ///< shoulder joint above the floor, m
   double shoulder_offset = 0.0;     ///< shoulder joint sideways from the body midline, m
+  // trunk, in the torso frame (origin on the floor under the body centre, x forward, z up)
+  double hip_height = 0.0;          ///< top of the legs box, bottom of the torso box, m
+  double torso_top = 0.0;           ///< top of the torso box, m
+  double torso_depth = 0.22;        ///< torso box along x (front to back), m
+  double torso_width = 0.38;        ///< torso box along y (side to side), m
+  double legs_depth = 0.18;         ///< legs box along x, m
+  double legs_width = 0.32;         ///< legs box along y, m
+  double head_centre = 0.0;         ///< head sphere centre above the floor, m
+  double head_radius = 0.0;         ///< m
 
   /// Elbow to grip point, m: the second link of the two-link arm.
   double elbowToGrip() const { return forearm + wrist_to_grip; }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "config/input_error.hpp"
+#include "scenes/scenario/body_dimensions.hpp"
 
 namespace handover::sim {
 namespace {
@@ -98,16 +99,17 @@ std::string buildSceneXml(const std::string& template_text, const SimOptions& op
   // at rest on the table, beside the robot, until placed
   set("object", "pos", {0.45, 0.3, half_height});
 
-  // person: proportions of stature (legs to the hip at 0.53 H, torso to the
-  // shoulder at 0.81 H, head centre at 0.93 H)
+  // person: proportions of stature (scenario/body_dimensions.hpp; the
+  // controller's collision model sizes the same trunk from the same numbers)
   const HumanOptions& h = options.human;
-  const double hip = 0.53 * h.height, shoulder = 0.81 * h.height;
-  set("human_legs_geom", "size", {0.09, 0.16, 0.5 * hip});
+  const scenario::BodyDimensions body = scenario::bodyDimensionsFromHeight(h.height);
+  const double hip = body.hip_height, shoulder = body.torso_top;
+  set("human_legs_geom", "size", {0.5 * body.legs_depth, 0.5 * body.legs_width, 0.5 * hip});
   set("human_legs_geom", "pos", {0.0, 0.0, 0.5 * hip});
-  set("human_torso_geom", "size", {0.11, 0.19, 0.5 * (shoulder - hip)});
+  set("human_torso_geom", "size", {0.5 * body.torso_depth, 0.5 * body.torso_width, 0.5 * (shoulder - hip)});
   set("human_torso_geom", "pos", {0.0, 0.0, 0.5 * (shoulder + hip)});
-  set("human_head_geom", "size", {0.06 * h.height});
-  set("human_head_geom", "pos", {0.0, 0.0, 0.93 * h.height});
+  set("human_head_geom", "size", {body.head_radius});
+  set("human_head_geom", "pos", {0.0, 0.0, body.head_centre});
   set("human_upper_arm_geom", "size", {0.045, 0.5 * h.upper_arm_length});
   set("human_upper_arm_geom", "pos", {0.0, 0.0, 0.5 * h.upper_arm_length});
   set("human_forearm_geom", "size", {0.035, 0.5 * h.forearm_length});

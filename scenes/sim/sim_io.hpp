@@ -30,6 +30,15 @@ struct ContactReport {
   bool object_welded_to_hand = false;
 };
 
+/// True clearance between the simulated robot's collision geoms and the
+/// person's geoms (hand, forearm, upper arm, torso, legs, head), from
+/// MuJoCo's own geometry at the state contacts() describes. m; negative =
+/// penetration depth. Distances above the query's cap read as the cap.
+struct PersonClearance {
+  double all = 0.0;              ///< every robot geom, fingers included
+  double without_fingers = 0.0;  ///< the finger geoms left out (they hold a shared object)
+};
+
 /// Ground truth of the object (for judging and sensors; not for the controller).
 struct ObjectState {
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  ///< object frame in the world

@@ -350,6 +350,43 @@ ContactReport Simulation::contacts() const {
   return r;
 }
 
+PersonClearance Simulation::personClearance(double cap) const {
+  PersonClearance out{cap, cap};
+  mjContact con[mjMAXCONPAIR];
+  auto robot = [](unsigned char x) { return x == kRobot || x == kLeftFinger || x == kRightFinger; };
+  for (int g1 = 0; g1 < m_->ngeom; ++g1) {
+    if (!robot(geom_role_[g1]) || !(m_->geom_contype[g1] & 1)) continue;  // visual geoms do not count
+    const bool finger = geom_role_[g1] != kRobot;
+    for (int g2 = 0; g2 < m_->ngeom; ++g2) {
+      if (geom_role_[g2] != kPerson) continue;
+      // bounding spheres: nothing closer than cap can hide beyond them
+      const mjtNum* p1 = d_->geom_xpos + 3 * g1;
+      const mjtNum* p2 = d_->geom_xpos + 3 * g2;
+      const double centre = std::sqrt((p1[0] - p2[0]) * (p1[0] - p2[0]) + (p1[1] - p2[1]) * (p1[1] - p2[1]) +
+                                      (p1[2] - p2[2]) * (p1[2] - p2[2]));
+      if (centre - m_->geom_rbound[g1] - m_->geom_rbound[g2] >= cap) continue;
+      // MuJoCo's narrow phase wants the pair in type order; it reports every
+      // point closer than the margin, so a margin of `cap` yields the distance
+      int a = g1, b = g2;
+      if (m_->geom_type[a] > m_->geom_type[b]) std::swap(a, b);
+      const mjfCollision collide = mjCOLLISIONFUNC[m_->geom_type[a]][m_->geom_type[b]];
+      if (!collide) continue;
+      // MuJoCo 2.2.2's box-box test is exact for overlaps but returns made-up
+      // depths (down to -1 m) when asked for distances with a wide margin:
+      // box pairs (the fingers against the hand or the trunk) give only
+      // penetrations, as in MuJoCo's own contact list; the gripper's other
+      // geoms bound how far the fingers are
+      const bool box_box = m_->geom_type[a] == mjGEOM_BOX && m_->geom_type[b] == mjGEOM_BOX;
+      const int n = collide(m_, d_, con, a, b, box_box ? 0.0 : cap);
+      for (int i = 0; i < n; ++i) {
+        out.all = std::min(out.all, static_cast<double>(con[i].dist));
+        if (!finger) out.without_fingers = std::min(out.without_fingers, static_cast<double>(con[i].dist));
+      }
+    }
+  }
+  return out;
+}
+
 ObjectState Simulation::object() const {
   ObjectState s;
   s.pose = poseFrom(d_->qpos + object_qpos_, d_->qpos + object_qpos_ + 3);

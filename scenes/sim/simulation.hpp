@@ -98,6 +98,15 @@ class Simulation : public io::ArmDriver {
   /// state the last step started from (at most one step old). Real-time safe.
   ContactReport contacts() const;
 
+  /// True robot-person clearance from MuJoCo's geometry (every robot geom
+  /// with contype 1 against every person geom), at the state contacts()
+  /// describes; distances above `cap` (m) read as `cap`. A penetration
+  /// counts whether or not MuJoCo's contact list holds it. Box-box pairs
+  /// (the finger boxes against the hand, torso and legs boxes) report only
+  /// penetrations: MuJoCo 2.2.2's box-box distances are unreliable. For
+  /// judges and tests. Real-time safe (a fixed contact buffer on the stack).
+  PersonClearance personClearance(double cap = 0.5) const;
+
   /// Ground truth of the object. Real-time safe.
   ObjectState object() const;
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "control/collision/collision_config.hpp"
+#include "control/collision/collision_data.hpp"
 #include "control/collision/collision_model.hpp"
 #include "control/model/robot_description.hpp"
 #include "runtime/collision_queries.hpp"
@@ -60,6 +61,30 @@ TEST(CollisionQueries, AnotherGripperIsADescriptionChange) {
     ++fingertips;
   }
   EXPECT_EQ(fingertips, 1);
+}
+
+// The "arm" distance (everything but the hand) leaves the gripper out against
+// the person's forearm (the handover itself happens there) but not against
+// the trunk: a gripper at the chest is no handover.
+TEST(CollisionQueries, GripperCountsAgainstTheTrunkButNotTheForearm) {
+  const control::RobotDescription d = control::defaultRobotDescription();
+  const control::Model model = control::loadModel(d, 0.08);
+  const control::CollisionConfig cfg = control::parseCollisionConfig(
+      "pairs:\n"
+      "  - {name: fore, robot: panda_hand, other: human_forearm, margin: 0.0}\n"
+      "  - {name: trunk, robot: panda_hand, other: human_torso, margin: 0.0}\n",
+      "queries.yaml");
+  const control::CollisionModel cm = control::buildCollisionModel(model, cfg);
+  control::CollisionData cd(cm);
+  for (int k = 0; k < cm.numPairs(); ++k) {
+    cd.results[k].active = true;
+    cd.results[k].distance = cm.rule_names[cm.pairs[k].rule] == "fore" ? 0.01 : 0.05 + 0.001 * k;
+  }
+  double trunk = 1e9;
+  for (int k = 0; k < cm.numPairs(); ++k)
+    if (cm.rule_names[cm.pairs[k].rule] == "trunk") trunk = std::min(trunk, cd.results[k].distance);
+  EXPECT_DOUBLE_EQ(personDistance(cm, cd, -1, false, PersonPart::kArm), trunk);
+  EXPECT_DOUBLE_EQ(personDistance(cm, cd, -1, false, PersonPart::kAll), 0.01);
 }
 
 }  // namespace

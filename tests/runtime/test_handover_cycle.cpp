@@ -115,6 +115,43 @@ TEST(HandoverCycle, SharingTheObjectSwitchesTheScopedRules) {
   EXPECT_TRUE(cycle.collision().ruleEnabled(cycle.handGripperRule()));
 }
 
+// Trackers do not see the trunk: with a declared stand the cycle places it
+// under the tracked shoulder (the upper arm's origin), shifted to the body's
+// midline, facing the declared way, on the floor; without one it stays out.
+TEST(HandoverCycle, TrunkStandsUnderTheTrackedShoulder) {
+  CycleSettings s = defaultCycleSettings();
+  s.stand.declared = true;
+  s.stand.yaw = M_PI;            // facing the robot from +x: the person's right is +y
+  s.stand.shoulder_side = 0.2;   // a right hand: the shoulder 0.2 m right of the midline
+  HandoverCycle cycle(s);
+  const io::Vector7 q0 = cycle.controller().config().posture.target;
+  HandInView person;
+  cycle.start(armAt(q0, 0.0), false);
+  cycle.step(0.0, armAt(q0, 0.0), person);
+  cycle.step(0.001, armAt(q0, 0.001), person);
+  const auto& cm = cycle.collision().collisionModel();
+  const auto& cd = cycle.collision().collisionData();
+  const Eigen::Vector3d shoulder = cycle.estimate().human.upper_arm.translation();
+  const Eigen::Isometry3d torso = cd.body_pose[cm.human_torso] * cm.bodies[cm.human_torso].local.inverse();
+  EXPECT_NEAR(torso.translation().x(), shoulder.x(), 1e-9);
+  EXPECT_NEAR(torso.translation().y(), shoulder.y() - 0.2, 1e-9);
+  EXPECT_NEAR(torso.translation().z(), -0.75, 1e-9);
+  EXPECT_TRUE(torso.linear().isApprox(Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitZ()).toRotationMatrix(), 1e-9));
+  // the head above it, at the stature's head height
+  const Eigen::Vector3d head = cd.body_pose[cm.human_head].translation();
+  EXPECT_NEAR(head.z(), -0.75 + s.collision.person.trunk.head_centre, 1e-9);
+
+  // no declared stand: no trunk pair is ever active
+  HandoverCycle blind(defaultCycleSettings());
+  HandInView again;
+  blind.start(armAt(q0, 0.0), false);
+  for (int k = 0; k < 5; ++k) blind.step(k * 0.001, armAt(q0, k * 0.001), again);
+  const auto& bcm = blind.collision().collisionModel();
+  for (int k = 0; k < bcm.numPairs(); ++k)
+    if (bcm.bodies[bcm.pairs[k].other_body].kind == control::CollisionBodyKind::kHumanTrunk)
+      EXPECT_FALSE(blind.collision().collisionData().results[k].active) << bcm.pairLabel(k);
+}
+
 TEST(HandoverCycle, StartSetsTheGripperAndPayload) {
   HandoverCycle empty(defaultCycleSettings());
   const io::Vector7 q0 = empty.controller().config().posture.target;

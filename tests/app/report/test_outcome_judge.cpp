@@ -13,6 +13,7 @@ namespace {
 struct Script {
   double t_rest = 1.0, t_grasp = 1.5, t_release = 2.0, t_end = 3.0;
   bool touch_person = false;
+  bool penetrate_person = false;  ///< true geometry inside the person, no simulator contact
   bool drop = false;
   bool qp_fail = false;
   int relaxed_steps = 0;  ///< steps solved with the collision rows relaxed
@@ -36,6 +37,7 @@ RunSummary play(const Script& sc, const std::string& fsm_outcome = "success") {
     f.object_pos = f.hand_pos + Eigen::Vector3d(-away, 0, 0.02);
     if (sc.drop && f.time > sc.t_release) f.object_on_table = true;
     f.robot_human_contacts = (sc.touch_person && std::abs(f.time - 1.2) < 0.01) ? 1 : 0;
+    f.human_penetration = sc.penetrate_person && f.time >= 1.3 && f.time < 1.4;
     f.qp_failed = sc.qp_fail && i == 100;
     f.qp_relaxed = i >= 200 && i < 200 + sc.relaxed_steps;
     f.min_human_distance = 0.2 - 0.01 * std::min(f.time, 1.0);
@@ -44,6 +46,20 @@ RunSummary play(const Script& sc, const std::string& fsm_outcome = "success") {
     judge.observe(f);
   }
   return judge.finish(true, fsm_outcome, 1, 0, 0, 1.0);
+}
+
+// A robot geom inside the person's true body is a contact even when the
+// simulator's contact list is empty (a -4 mm true clearance used to be judged
+// a success).
+TEST(OutcomeJudge, PenetrationWithoutSimulatorContactIsHandContact) {
+  Script sc;
+  sc.penetrate_person = true;
+  const RunSummary r = play(sc);
+  EXPECT_EQ(r.outcome, "hand_contact");
+  EXPECT_EQ(r.human_contacts, 1);  // one onset for the whole 0.1 s
+  EXPECT_NEAR(r.penetration_time, 0.1, 2e-3);
+  sc.touch_person = true;  // a separate simulator contact before it: two onsets
+  EXPECT_EQ(play(sc).human_contacts, 2);
 }
 
 TEST(OutcomeJudge, CleanExchangeIsSuccessWithTimings) {

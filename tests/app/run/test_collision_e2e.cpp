@@ -31,8 +31,8 @@ TEST(CollisionEndToEnd, ForearmInTheWayIsAvoided) {
   // sDist of the person pairs (the defaults of config/collision.yaml)
   const control::CollisionConfig ccfg = control::loadCollisionConfig(control::defaultCollisionConfigPath());
   const double s_dist = ccfg.defaults.s_dist;
-  // d_human is measured without the sensor margin: the dampers act below iDist + margin
-  const double reach = ccfg.defaults.i_dist + ccfg.person.margin;
+  // d_human is measured without the margins: the dampers act below iDist + margin + sensing budget
+  const double reach = ccfg.defaults.i_dist + ccfg.person.margin + ccfg.sensing_error.budget();
 
   const testing::CsvTable log = testing::readCsv(dir.file("out/log.csv"));
   ASSERT_GE(log.column("d_human"), 0);
@@ -60,6 +60,25 @@ TEST(CollisionEndToEnd, ForearmInTheWayIsAvoided) {
   EXPECT_EQ(below, 0) << "log.csv rows with d_human < " << s_dist << "; min " << min_log << " at t = " << min_log_time;
   // the forearm really was in the way: the arm came within the person pairs' reach (iDist)
   EXPECT_LT(min_log, reach) << "the person never came near the arm: the scenario no longer tests avoidance";
+}
+
+// A person standing as close as the contract allows offers the object low
+// and close (h2r_close_stand): the arm works next to the chest and head.
+// With only hand and arm in the distance model the elbow touched the chest;
+// the trunk is now a collision body, and the judge sees the true body.
+TEST(CollisionEndToEnd, PersonStandingCloseIsNeverTouched) {
+  testing::ScratchDir dir("collision_close_stand");
+  const scenario::Scenario sc = scenario::parseScenario(testing::repoPath("scenes/scenarios/h2r_close_stand.yaml"));
+  app::RunOptions opt;
+  opt.out_dir = dir.file("out");
+  opt.plots = false;
+  const app::RunSummary s = app::runScenario(sc, opt);
+  std::printf("h2r_close_stand: outcome %s, human contacts %d, min_human_distance %.4f m, penetration %.3f s\n",
+              s.outcome.c_str(), s.human_contacts, s.min_human_distance, s.penetration_time);
+  EXPECT_EQ(s.human_contacts, 0) << app::formatSummary(s);
+  EXPECT_EQ(s.penetration_time, 0.0);
+  EXPECT_GT(s.min_human_distance, 0.0);
+  EXPECT_EQ(s.limit_violations.position + s.limit_violations.velocity + s.limit_violations.torque, 0);
 }
 
 }  // namespace

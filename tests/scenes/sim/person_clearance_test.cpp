@@ -1,0 +1,88 @@
+// True robot-person clearance from MuJoCo's geometry (the judge's measure):
+// far, then a known gap, then penetration of the hand, the torso and the head.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "scenes/sim/simulation.hpp"
+#include "sim_test_support.hpp"
+
+namespace handover::sim {
+namespace {
+
+HumanBodyPoses personAway() {
+  HumanBodyPoses p;
+  p.hand = test::pose(0.9, 0.2, 0.2);
+  p.forearm = test::pose(0.95, 0.2, 0.35);
+  p.upper_arm = test::pose(0.95, 0.2, 0.68);
+  p.torso = test::pose(1.0, 0.0, -0.75, 0, 0, M_PI);
+  return p;
+}
+
+// steps once so that the geometry the clearance reads is the posed one
+PersonClearance clearanceWith(Simulation& sim, const HumanBodyPoses& p) {
+  EXPECT_TRUE(sim.setHumanPoses(p));
+  test::holdStep(sim, test::readyPosture());
+  return sim.personClearance(0.5);
+}
+
+TEST(PersonClearance, FarPersonReadsAsTheCap) {
+  Simulation sim;
+  sim.load();
+  HumanBodyPoses p = personAway();
+  p.hand = test::pose(1.6, 0.8, 0.3);
+  p.forearm = test::pose(1.7, 0.8, 0.3);
+  p.upper_arm = test::pose(1.8, 0.8, 0.3);
+  p.torso = test::pose(2.0, 0.0, -0.75, 0, 0, M_PI);
+  const PersonClearance c = clearanceWith(sim, p);
+  EXPECT_DOUBLE_EQ(c.all, 0.5);
+  EXPECT_DOUBLE_EQ(c.without_fingers, 0.5);
+}
+
+TEST(PersonClearance, NearHandWithoutContactIsPositiveAndBoundedByItsGap) {
+  Simulation sim;
+  sim.load();
+  test::holdStep(sim, test::readyPosture());
+  // the hand box (half extent 0.045 along its x) beside the palm capsule
+  // (panda_hand_col_a: radius 0.028 along the hand's y, 0.03 above the flange),
+  // `gap` away along the hand's x: the clearance is at most the gap (another
+  // robot geom may be nearer) and positive (nothing touches)
+  const Eigen::Isometry3d tcp = sim.tcpPose();
+  const Eigen::Vector3d axis_point = tcp * Eigen::Vector3d(0, 0, -0.1034 + 0.03);
+  const double gap = 0.02;
+  HumanBodyPoses p = personAway();
+  p.hand = Eigen::Isometry3d::Identity();
+  p.hand.linear() = tcp.linear();
+  p.hand.translation() = axis_point + tcp.linear().col(0) * (0.028 + 0.045 + gap);
+  const PersonClearance c = clearanceWith(sim, p);
+  EXPECT_GT(c.all, 0.0);
+  EXPECT_LE(c.all, gap + 1e-4);
+  EXPECT_GE(c.without_fingers, c.all);
+  EXPECT_EQ(sim.contacts().robot_human, 0);
+}
+
+TEST(PersonClearance, PenetrationOfHandTorsoAndHeadIsNegative) {
+  Simulation sim;
+  sim.load();
+  test::holdStep(sim, test::readyPosture());
+  const Eigen::Isometry3d tcp = sim.tcpPose();
+  // the hand box centred on the palm capsule
+  HumanBodyPoses p = personAway();
+  p.hand = Eigen::Isometry3d::Identity();
+  p.hand.translation() = tcp * Eigen::Vector3d(0, 0, -0.1034 + 0.03);
+  EXPECT_LT(clearanceWith(sim, p).all, -0.01);
+
+  // the torso box around the tcp (the person stands where the gripper is)
+  const double height = sim.options().human.height;
+  p = personAway();
+  p.torso = test::pose(tcp.translation().x(), tcp.translation().y(), tcp.translation().z() - 0.67 * height);
+  EXPECT_LT(clearanceWith(sim, p).all, -0.01);
+
+  // the head sphere on the tcp
+  p = personAway();
+  p.torso = test::pose(tcp.translation().x(), tcp.translation().y(), tcp.translation().z() - 0.93 * height);
+  EXPECT_LT(clearanceWith(sim, p).all, -0.01);
+}
+
+}  // namespace
+}  // namespace handover::sim
