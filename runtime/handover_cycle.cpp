@@ -26,10 +26,7 @@ CycleSettings defaultCycleSettings() {
   s.gripper_force = fp.gripper_force;
   s.ft_gravity_sign = fp.ft_gravity_sign;
   const perception::PerceptionConfig p = perception::loadPerceptionConfig(perception::defaultPerceptionConfigPath());
-  s.estimator.max_gap = p.max_gap;
-  s.estimator.max_latency = p.max_latency;
-  s.estimator.smoothing_time = p.smoothing_time;
-  s.estimator.rotation_smoothing_time = p.rotation_smoothing_time;
+  s.estimator = p.estimator;  // staleness, motion model, prediction, gates
   s.target.blend_time = p.blend_time;
   s.grasp_selection = control::grasp::loadGraspSelectionConfig(std::string(HANDOVER_SOURCE_DIR) +
                                                                "/config/grasp_selection.yaml");
