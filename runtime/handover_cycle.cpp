@@ -95,9 +95,15 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
                           controller_.tcpPose(), machine_->context().objectInTcp());  // the grasp closed on
   estimate_ = &est;
 
-  // 2. velocities from new samples
-  if (est.human.valid) hand_vel_.update(est.human.stamp, est.human.hand);
-  if (est.object.valid && !robot_holds) object_vel_.update(est.human.stamp, est.object.pose);
+  // 2. velocities: the estimator's motion model when it has one, else differences of new samples
+  if (est.human.valid) {
+    if (est.human.has_velocity) hand_vel_.set(est.human.hand_velocity);
+    else hand_vel_.update(est.human.stamp, est.human.hand);
+  }
+  if (est.object.valid && !robot_holds) {
+    if (est.object.has_velocity) object_vel_.set(est.object.velocity);
+    else object_vel_.update(est.human.stamp, est.object.pose);
+  }
 
   // 3-4. the state machine, on this cycle's sensing and the last cycle's controller state
   adapter_.setTime(t);
