@@ -57,6 +57,9 @@ PerceptionConfig parsePerceptionConfig(const YamlReader& root) {
   if (auto v = root.optionalChild("model"))
     e.model = v->asEnum({"kalman", "smoothing"}) == "kalman" ? MotionModel::kKalman : MotionModel::kSmoothing;
   if (auto v = root.optionalChild("prediction_horizon")) e.prediction_horizon = v->checkRange(v->asDouble(), 0.0, 1.0);
+  if (auto v = root.optionalChild("smooth_rotations")) e.smooth_rotations = v->asBool();
+  if (auto v = root.optionalChild("prediction_significance"))
+    e.prediction_significance = v->checkRange(v->asDouble(), 0.0, 10.0);
   if (auto v = root.optionalChild("rotation_prediction_horizon"))
     e.rotation_prediction_horizon = v->checkRange(v->asDouble(), 0.0, 1.0);
   if (auto v = root.optionalChild("kalman")) parseKalman(*v, e.filter);

@@ -76,6 +76,7 @@ void PerceptionEstimator::filter(const PoseSample& s, bool reseed) {
   feed(hand_f_, s.hand);
   feed(forearm_f_, s.forearm);
   feed(upper_arm_f_, s.upper_arm);
+  if (settings_.smooth_rotations) smoothInto(smoothed_, s, have_ && !reseed);
   if (s.has_object) {
     if (!latest_.has_object || !have_) object_f_.clear();  // the object (re)appears in the stream
     feed(object_f_, s.object);
@@ -83,10 +84,10 @@ void PerceptionEstimator::filter(const PoseSample& s, bool reseed) {
   latest_ = s;
 }
 
-void PerceptionEstimator::smooth(const PoseSample& s) {
+void PerceptionEstimator::smoothInto(PoseSample& latest_, const PoseSample& s, bool have) const {
   const double tau_rot = settings_.rotation_smoothing_time >= 0.0 ? settings_.rotation_smoothing_time
                                                                      : settings_.smoothing_time;
-  if (have_ && (settings_.smoothing_time > 0.0 || tau_rot > 0.0)) {
+  if (have && (settings_.smoothing_time > 0.0 || tau_rot > 0.0)) {
     const double dt = s.stamp - latest_.stamp;
     const auto weight = [dt](double tau) { return tau > 0.0 ? 1.0 - std::exp(-dt / tau) : 1.0; };
     const double a = weight(settings_.smoothing_time), b = weight(tau_rot);
@@ -131,10 +132,16 @@ const PerceptionEstimate& PerceptionEstimator::estimate(double now, ObjectHolder
       h.predicted = std::clamp(h.age, 0.0, settings_.prediction_horizon);
       const double at = latest_.stamp + h.predicted;
       const double at_rot = latest_.stamp + std::clamp(h.age, 0.0, settings_.rotation_prediction_horizon);
-      h.hand = hand_f_.predict(at, at_rot).isometry();
-      h.forearm = forearm_f_.predict(at, at_rot).isometry();
-      h.upper_arm = upper_arm_f_.predict(at, at_rot).isometry();
-      if (latest_.has_object) tracked_object = object_f_.predict(at, at_rot).isometry();
+      h.hand = hand_f_.predict(at, at_rot, settings_.prediction_significance).isometry();
+      h.forearm = forearm_f_.predict(at, at_rot, settings_.prediction_significance).isometry();
+      h.upper_arm = upper_arm_f_.predict(at, at_rot, settings_.prediction_significance).isometry();
+      if (latest_.has_object) tracked_object = object_f_.predict(at, at_rot, settings_.prediction_significance).isometry();
+      if (settings_.smooth_rotations) {
+        h.hand.linear() = smoothed_.hand.orientation.toRotationMatrix();
+        h.forearm.linear() = smoothed_.forearm.orientation.toRotationMatrix();
+        h.upper_arm.linear() = smoothed_.upper_arm.orientation.toRotationMatrix();
+        if (latest_.has_object && smoothed_.has_object) tracked_object.linear() = smoothed_.object.orientation.toRotationMatrix();
+      }
       h.has_velocity = true;
       h.hand_velocity << hand_f_.velocity(), hand_f_.angularVelocity();
     } else {

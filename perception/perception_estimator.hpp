@@ -50,6 +50,14 @@ struct EstimatorSettings {
   /// kalman: s, the same for rotations (hands turn in short, quick
   /// motions: a turn rate held longer than ~50 ms overshoots).
   double rotation_prediction_horizon = 0.0;
+  /// kalman: the prediction uses each velocity scaled by its significance
+  /// (PoseFilter::predict with this k): at rest, the velocity's noise times
+  /// the horizon would make the estimate jitter. 0 = plain prediction.
+  double prediction_significance = 2.0;
+  /// kalman: true = rotations from the first-order smoothing
+  /// (rotation_smoothing_time) instead of the filter (positions stay filtered
+  /// and predicted).
+  bool smooth_rotations = true;
   PoseFilterSettings filter;  ///< kalman: noise and motion model
   /// smoothing: s, time constant of the first-order smoothing applied to
   /// each new sample (positions exponentially, rotations by slerp), 0 =
@@ -133,13 +141,15 @@ class PerceptionEstimator {
   const EstimatorSettings& settings() const { return settings_; }
 
  private:
-  void smooth(const PoseSample& s);
+  void smooth(const PoseSample& s) { smoothInto(latest_, s, have_); }
+  void smoothInto(PoseSample& into, const PoseSample& s, bool have) const;
   void filter(const PoseSample& s, bool reseed);
 
   EstimatorSettings settings_;
   PlausibilityGate gate_;
   bool have_ = false;
   PoseSample latest_;  ///< smoothing: the smoothed sample; kalman: the latest accepted (raw)
+  PoseSample smoothed_;  ///< kalman with rotation_smoothing: the first-order smoothed sample (its rotations)
   PoseFilter hand_f_, forearm_f_, upper_arm_f_, object_f_;
   double arrival_ = 0.0;  ///< s, when latest_ arrived
   PerceptionEstimate est_;

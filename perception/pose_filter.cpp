@@ -103,6 +103,18 @@ void PoseFilter::update(const Pose& z, double stamp) {
   w_ += kv * er;
 }
 
+Pose PoseFilter::predict(double t_position, double t_rotation, double k) const {
+  if (k <= 0.0) return predict(t_position, t_rotation);
+  const auto significance = [k](const Eigen::Vector3d& v, double var) {
+    const double v2 = v.squaredNorm(), n2 = k * k * 3.0 * std::max(var, 0.0);
+    return v2 + n2 > 0.0 ? v2 / (v2 + n2) : 0.0;
+  };
+  Pose out;
+  out.position = p_ + significance(v_, pp_.vv) * v_ * (t_position - stamp_);
+  out.orientation = (expRotation(significance(w_, pr_.vv) * w_ * (t_rotation - stamp_)) * q_).normalized();
+  return out;
+}
+
 Pose PoseFilter::predict(double t_position, double t_rotation) const {
   Pose out;
   out.position = p_ + v_ * (t_position - stamp_);

@@ -69,6 +69,12 @@ class PoseFilter {
   Pose predict(double t) const { return predict(t, t); }
   /// The same with the position at `t_position` and the rotation at `t_rotation`.
   Pose predict(double t_position, double t_rotation) const;
+  /// predict(), with the velocities scaled by their significance s = |v|^2 /
+  /// (|v|^2 + k^2 * 3 var(v)) (var from the filter's covariance): a body at
+  /// rest, whose estimated velocity is mostly noise, is not pushed around by
+  /// it (the prediction's jitter is the velocity's noise times the horizon),
+  /// while one that clearly moves is predicted in full. k = 0: plain.
+  Pose predict(double t_position, double t_rotation, double k) const;
   const Eigen::Vector3d& velocity() const { return v_; }         ///< m/s, world
   const Eigen::Vector3d& angularVelocity() const { return w_; }  ///< rad/s, world
   double stamp() const { return stamp_; }                          ///< s, of the last measurement

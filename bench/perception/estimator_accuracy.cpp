@@ -16,7 +16,7 @@
 //   key=value overrides the Kalman filter of config/perception.yaml:
 //   acceleration_noise, angular_acceleration_noise, position_noise,
 //   rotation_noise_deg, prediction_horizon, rotation_prediction_horizon;
-//   tolerance (of the gates).
+//   prediction_significance; tolerance (of the gates).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -141,6 +141,7 @@ int main(int argc, char** argv) {
     else if (key == "prediction_horizon") product.prediction_horizon = v;
     else if (key == "rotation_prediction_horizon") product.rotation_prediction_horizon = v;
     else if (key == "tolerance") product.gate.tolerance = v;
+    else if (key == "prediction_significance") product.prediction_significance = v;
     else {
       std::fprintf(stderr, "unknown setting %s\n", key.c_str());
       return 2;

@@ -170,3 +170,20 @@ TEST(PerceptionEstimator, ALatencyTheContractAllowsIsNotStale) {
   for (int k = 0; k < 10; ++k) ASSERT_TRUE(est.addSample(at(k * period, 0.5), k * period + latency));
   EXPECT_FALSE(est.estimate(9 * period + latency, ObjectHolder::Person).human.stale);
 }
+
+// the Kalman filter's rotation made a presented object jitter in the hand
+// (give, noisy sensing: the arm never settled in Present); rotations are
+// smoothed first-order as before, positions filtered and predicted
+TEST(PerceptionEstimator, KalmanPositionsWithSmoothedRotations) {
+  EstimatorSettings cfg;
+  cfg.rotation_smoothing_time = 0.1;
+  ASSERT_TRUE(cfg.smooth_rotations);
+  PerceptionEstimator est(cfg);
+  PoseSample a = at(1.0, 0.5), b = at(1.0 + 1.0 / 60, 0.5);
+  b.hand.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ()));  // +0.1 rad
+  ASSERT_TRUE(est.addSample(a));
+  ASSERT_TRUE(est.addSample(b));
+  const double w = 1.0 - std::exp(-(1.0 / 60) / 0.1);
+  const Eigen::AngleAxisd got(est.estimate(b.stamp, ObjectHolder::Person).human.hand.linear());
+  EXPECT_NEAR(got.angle(), 0.3 + w * 0.1, 1e-6);
+}

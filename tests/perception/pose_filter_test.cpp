@@ -102,3 +102,24 @@ TEST(PoseFilter, EstimatesTheSensorsNoiseAndSmoothsANoisyOneMore) {
   EXPECT_LT(e_adaptive, 0.5 * e_fixed);
   EXPECT_LT(r_adaptive, 0.7 * r_fixed);
 }
+
+TEST(PoseFilter, ASignificancePredictionIgnoresTheVelocityNoiseOfABodyAtRest) {
+  PoseFilter f;
+  std::mt19937 rng(7);
+  std::normal_distribution<double> n(0.0, 1.0);
+  double plain = 0, significant = 0;
+  for (int k = 0; k < 600; ++k) {
+    Pose z;
+    z.position = Eigen::Vector3d(0.5, 0, 0.3) + 0.004 * Eigen::Vector3d(n(rng), n(rng), n(rng));
+    f.update(z, k / 60.0);
+    if (k < 120) continue;
+    // 0.1 s ahead, as with a 0.1 s latency
+    plain += (f.predict(k / 60.0 + 0.1, k / 60.0, 0.0).position - Eigen::Vector3d(0.5, 0, 0.3)).squaredNorm();
+    significant += (f.predict(k / 60.0 + 0.1, k / 60.0, 2.0).position - Eigen::Vector3d(0.5, 0, 0.3)).squaredNorm();
+  }
+  EXPECT_LT(significant, 0.7 * plain);
+  // a body that clearly moves is predicted (almost) in full
+  PoseFilter g;
+  for (int k = 0; k <= 60; ++k) g.update(poseAt(k / 60.0, {0.3, 0, 0.3}, {0.8, 0, 0}, {0, 0, 0}), k / 60.0);
+  EXPECT_NEAR(g.predict(1.2, 1.0, 2.0).position.x(), 0.3 + 0.8 * 1.2, 0.01);
+}
