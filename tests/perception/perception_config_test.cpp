@@ -29,6 +29,9 @@ TEST(PerceptionConfig, ShippedFileIsTheDefaults) {
   EXPECT_DOUBLE_EQ(c.estimator.filter.acceleration_noise, d.filter.acceleration_noise);
   EXPECT_DOUBLE_EQ(c.estimator.filter.angular_acceleration_noise, d.filter.angular_acceleration_noise);
   EXPECT_NEAR(c.estimator.filter.rotation_noise, d.filter.rotation_noise, 1e-12);
+  EXPECT_DOUBLE_EQ(c.estimator.prediction_significance, d.prediction_significance);
+  EXPECT_EQ(c.estimator.smooth_rotations, d.smooth_rotations);
+  EXPECT_DOUBLE_EQ(c.estimator.filter.noise_adaptation_time, d.filter.noise_adaptation_time);
   EXPECT_DOUBLE_EQ(c.estimator.gate.max_speed, d.gate.max_speed);
   EXPECT_DOUBLE_EQ(c.estimator.gate.max_acceleration, d.gate.max_acceleration);
   EXPECT_DOUBLE_EQ(c.estimator.gate.max_jump, d.gate.max_jump);
