@@ -56,7 +56,10 @@ int runCommand(const std::string& file, std::string out_dir, const std::string& 
   if (plot_status != 0) std::cerr << "handover: warning: plots not drawn (exit " << plot_status << ")\n";
   const int code = app::runExitCode(r, sc.expect.outcome.has_value());
   if (code == 1 && r.expectation_failures.empty()) {
-    std::cout << "UNSAFE     a limit was violated or the QP failed (no `expect: outcome` accepts it): exit 1\n";
+    if (r.outcome == "no_perception")
+      std::cout << "BLIND      the person could not be seen (no `expect: outcome` accepts it): exit 1\n";
+    else
+      std::cout << "UNSAFE     a limit was violated or the QP failed (no `expect: outcome` accepts it): exit 1\n";
   }
   return code;
 }

@@ -5,15 +5,18 @@
 #include <string>
 
 #include "config/yaml_reader.hpp"
+#include "perception/perception_estimator.hpp"
 
 namespace handover::perception {
 
 struct PerceptionConfig {
-  double max_gap = 0.1;          ///< s without a new sample: the stream stopped (stale)
-  double max_latency = 0.2;      ///< s, a sample older than this on arrival is too late to act on
-  double smoothing_time = 0.03;  ///< s, estimator smoothing time constant for positions (0 = none)
-  double rotation_smoothing_time = 0.1;  ///< s, the same for rotations (0 = none)
-  double blend_time = 0.5;       ///< s, observation-target switch blend
+  /// The estimator: staleness, motion model, prediction, gates (the object's
+  /// place in the hand stays identity: the scenario sets it).
+  EstimatorSettings estimator = defaults();
+  double blend_time = 0.5;  ///< s, observation-target switch blend
+
+  /// The product's defaults (as config/perception.yaml ships them).
+  static EstimatorSettings defaults();
 };
 
 /// Reads a perception config; unknown keys, wrong types and out-of-range

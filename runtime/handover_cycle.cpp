@@ -28,10 +28,7 @@ CycleSettings defaultCycleSettings() {
   s.gripper_force = fp.gripper_force;
   s.ft_gravity_sign = fp.ft_gravity_sign;
   const perception::PerceptionConfig p = perception::loadPerceptionConfig(perception::defaultPerceptionConfigPath());
-  s.estimator.max_gap = p.max_gap;
-  s.estimator.max_latency = p.max_latency;
-  s.estimator.smoothing_time = p.smoothing_time;
-  s.estimator.rotation_smoothing_time = p.rotation_smoothing_time;
+  s.estimator = p.estimator;  // staleness, motion model, prediction, gates
   s.target.blend_time = p.blend_time;
   s.grasp_selection = control::grasp::loadGraspSelectionConfig(std::string(HANDOVER_SOURCE_DIR) +
                                                                "/config/grasp_selection.yaml");
@@ -110,9 +107,15 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
                           controller_.tcpPose(), machine_->context().objectInTcp());  // the grasp closed on
   estimate_ = &est;
 
-  // 2. velocities from new samples
-  if (est.human.valid) hand_vel_.update(est.human.stamp, est.human.hand);
-  if (est.object.valid && !robot_holds) object_vel_.update(est.human.stamp, est.object.pose);
+  // 2. velocities: the estimator's motion model when it has one, else differences of new samples
+  if (est.human.valid) {
+    if (est.human.has_velocity) hand_vel_.set(est.human.hand_velocity);
+    else hand_vel_.update(est.human.stamp, est.human.hand);
+  }
+  if (est.object.valid && !robot_holds) {
+    if (est.object.has_velocity) object_vel_.set(est.object.velocity);
+    else object_vel_.update(est.human.stamp, est.object.pose);
+  }
 
   // 3-4. the state machine, on this cycle's sensing and the last cycle's controller state
   adapter_.setTime(t);

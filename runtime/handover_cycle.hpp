@@ -20,7 +20,8 @@
 //                  previous cycle; while the robot holds it, its pose is the
 //                  TCP pose of the previous Controller::step with the grasp
 //                  the state machine closed on.
-//   2. velocities  finite-difference hand and object velocities on new samples.
+//   2. velocities  hand and object velocities: the estimator's motion model's
+//                  (kalman), else finite differences on new samples.
 //   3. fsm input   assemble fsm::HandoverInput (table below).
 //   4. fsm         the state machine steps; through the adapter it changes
 //                  set-points (tasks, targets, gains, gripper, payload) that
@@ -159,8 +160,10 @@ class HandoverCycle {
   // --- read-outs of the last cycle (for logs, judges, tests) ---------------
   const io::ArmCommand& command() const { return command_; }
   const perception::PerceptionEstimate& estimate() const { return *estimate_; }
-  /// Pose samples the estimator refused so far (non-finite or out of order).
+  /// Pose samples the estimator refused so far (its plausibility gates).
   long rejectedSamples() const { return estimator_.rejected(); }
+  /// The same per reason.
+  const perception::RejectCounts& rejects() const { return estimator_.rejects(); }
   /// The source tracks the object as its own body (not hand * offset).
   bool objectTracked() const { return estimator_.objectTracked(); }
   const perception::TargetOutput& target() const { return obs_target_.output(); }

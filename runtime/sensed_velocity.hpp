@@ -30,6 +30,12 @@ class SensedVelocity {
     stamp_ = stamp;
     have_ = true;
   }
+  /// Takes a velocity estimated elsewhere (the perception estimator's motion
+  /// model) instead of differencing samples.
+  void set(const Eigen::Matrix<double, 6, 1>& v) {
+    v_ = v;
+    have_ = false;  // a later update() starts afresh
+  }
   const Eigen::Matrix<double, 6, 1>& velocity() const { return v_; }
 
  private:

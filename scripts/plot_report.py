@@ -15,8 +15,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-OUTCOMES = ["success", "aborted", "hand_contact", "object_drop", "timeout", "unsafe", "error"]
-COLOURS = ["#4c9a4c", "#8fb8de", "#d62728", "#ff7f0e", "#9467bd", "#8c564b", "#555555"]
+OUTCOMES = ["success", "aborted", "hand_contact", "object_drop", "timeout", "no_perception", "unsafe", "error"]
+COLOURS = ["#4c9a4c", "#8fb8de", "#d62728", "#ff7f0e", "#9467bd", "#e7c54a", "#8c564b", "#555555"]
 FACTORS = [("direction", "direction"), ("grasp", "grasp family"), ("shape", "shape"), ("behaviour", "behaviour"),
            ("placement", "person stands"), ("hand", "hand"), ("height", "height")]
 

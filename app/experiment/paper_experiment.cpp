@@ -109,11 +109,7 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
   human::ScriptedHuman person(sc);
   perception::SimulatedPoseSensor sensor(sc.sensor, static_cast<std::uint64_t>(sc.seed));
   const perception::PerceptionConfig pcfg = perception::loadPerceptionConfig(perception::defaultPerceptionConfigPath());
-  perception::EstimatorSettings est_settings;
-  est_settings.max_gap = pcfg.max_gap;
-  est_settings.max_latency = pcfg.max_latency;
-  est_settings.smoothing_time = pcfg.smoothing_time;
-  est_settings.rotation_smoothing_time = pcfg.rotation_smoothing_time;
+  perception::EstimatorSettings est_settings = pcfg.estimator;
   est_settings.hand_T_object = *sc.human.holds_object;
   perception::PerceptionEstimator estimator(est_settings);
 

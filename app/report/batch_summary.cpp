@@ -37,8 +37,8 @@ struct Mean {
 }  // namespace
 
 const std::vector<std::string>& outcomeNames() {
-  static const std::vector<std::string> names = {"success", "aborted", "hand_contact", "object_drop",
-                                                 "timeout", "unsafe",  "error"};
+  static const std::vector<std::string> names = {"success", "aborted",       "hand_contact", "object_drop",
+                                                 "timeout", "no_perception", "unsafe",       "error"};
   return names;
 }
 

@@ -47,7 +47,9 @@ struct ShardInfo {
 /// when `shard` is given.
 std::string batchSummaryJson(const std::vector<BatchEntry>& entries, const ShardInfo* shard = nullptr);
 
-/// The outcome names in judgement order.
+/// The outcome names (success, aborted, hand_contact, object_drop, timeout,
+/// no_perception, unsafe, error): the report's column order.
 const std::vector<std::string>& outcomeNames();
+constexpr int kOutcomes = 8;  ///< outcomeNames().size()
 
 }  // namespace handover::app

@@ -26,14 +26,14 @@ std::string sec(double v) {
 }
 
 const char* kHeader =
-    "| group | runs | ok % | success % | aborted % | contact % | drop % | timeout % | unsafe % | error % "
+    "| group | runs | ok % | success % | aborted % | contact % | drop % | timeout % | blind % | unsafe % | error % "
     "| grasp s (med/p90) | hand still to grasp s (med/p90) | total s (med/p90) |\n"
-    "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
 
 std::string row(const GroupStats& g) {
   std::ostringstream os;
   os << "| " << g.name << " | " << g.runs << " | " << pct(g.met_rate);
-  for (int i = 0; i < 7; ++i) os << " | " << pct(g.outcome_rate[i]);
+  for (int i = 0; i < kOutcomes; ++i) os << " | " << pct(g.outcome_rate[i]);
   os << " | " << sec(g.time_to_grasp_median) << " / " << sec(g.time_to_grasp_p90) << " | " << sec(g.hand_still_median)
      << " / " << sec(g.hand_still_p90) << " | " << sec(g.total_time_median) << " / " << sec(g.total_time_p90) << " |\n";
   return os.str();
@@ -66,7 +66,7 @@ GroupStats groupStats(const std::string& name, const std::vector<const BatchEntr
   g.runs = static_cast<int>(entries.size());
   std::vector<double> ttg, still, total;
   int met = 0;
-  int count[7] = {};
+  int count[kOutcomes] = {};
   const auto& names = outcomeNames();
   for (const BatchEntry* e : entries) {
     met += e->expectation_met ? 1 : 0;
@@ -79,7 +79,7 @@ GroupStats groupStats(const std::string& name, const std::vector<const BatchEntr
   }
   const double n = std::max(1, g.runs);
   g.met_rate = met / n;
-  for (int i = 0; i < 7; ++i) g.outcome_rate[i] = count[i] / n;
+  for (int i = 0; i < kOutcomes; ++i) g.outcome_rate[i] = count[i] / n;
   g.time_to_grasp_median = percentile(ttg, 0.5);
   g.time_to_grasp_p90 = percentile(ttg, 0.9);
   g.hand_still_median = percentile(still, 0.5);

@@ -16,7 +16,7 @@ struct GroupStats {
   std::string name;
   int runs = 0;
   double met_rate = 0.0;  ///< share of runs whose `expect:` held (the benchmark's success: an abort expects `aborted`)
-  double outcome_rate[7] = {};  ///< share of each outcome, in outcomeNames() order
+  double outcome_rate[kOutcomes] = {};  ///< share of each outcome, in outcomeNames() order
   // over runs whose outcome is success; NaN when there are none
   double time_to_grasp_median = 0.0, time_to_grasp_p90 = 0.0;
   double hand_still_median = 0.0, hand_still_p90 = 0.0;

@@ -16,6 +16,8 @@ bool OutcomeJudge::heldByRobot(const StepFacts& f) const {
 
 void OutcomeJudge::observe(const StepFacts& f) {
   if (f.time > last_time_) step_time_ = f.time - last_time_;
+  // time without a usable estimate of the person (the step's duration: since the last one)
+  if (!f.person_seen) unseen_time_ += std::max(0.0, f.time - last_time_);
   last_time_ = f.time;
   const bool robot_holds = heldByRobot(f);
 
@@ -34,6 +36,7 @@ void OutcomeJudge::observe(const StepFacts& f) {
     dropped_ = true;
     drop_time_ = f.time;
     drop_reason_ = f.object_on_table ? "table" : f.object_on_floor ? "floor" : "fell";
+    unseen_at_drop_ = unseen_time_;
   }
 
   lim_.position += f.position_violation ? 1 : 0;
@@ -99,6 +102,7 @@ RunSummary OutcomeJudge::finish(bool fsm_done, const std::string& fsm_outcome, i
   r.limit_violations = lim_;
   r.qp_failures = qp_failures_;
   r.qp_relaxed = qp_relaxed_;
+  r.person_unseen_time = unseen_time_;
   r.grasp_error_pos = grasp_pos_err_;
   r.grasp_error_rot_deg = grasp_rot_err_;
   r.states = states_;
@@ -116,8 +120,14 @@ RunSummary OutcomeJudge::finish(bool fsm_done, const std::string& fsm_outcome, i
   const bool exchange_done = exchanged_ && transfer_now_;
   if (robot_finished && exchange_done) r.total_time = last_time_;
 
+  // the person unseen for most of the time the handover had (until it failed)
+  const double window = dropped_ ? drop_time_ : last_time_;
+  const double unseen = dropped_ ? unseen_at_drop_ : unseen_time_;
+  const bool blind = window > 0.0 && unseen >= s_.unseen_share * window;
+
   // verdict, worst first
   if (lim_.position + lim_.velocity + lim_.torque > 0 || qp_failures_ > 0) r.outcome = "unsafe";
+  else if (blind && contacts_ == 0 && !(robot_finished && exchange_done)) r.outcome = "no_perception";
   else if (dropped_) r.outcome = "object_drop";
   else if (contacts_ > 0) r.outcome = "hand_contact";
   else if (robot_finished && exchange_done) r.outcome = "success";

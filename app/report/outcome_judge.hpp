@@ -41,6 +41,7 @@ struct StepFacts {
   bool torque_violation = false;
   bool qp_failed = false;
   bool qp_relaxed = false;  ///< solved only with the soft (collision) rows relaxed
+  bool person_seen = true;  ///< perception had a usable (valid, not stale) estimate of the person
   const std::string* state = nullptr;       ///< full state path; pointer must stay valid for the call
   double step_us = 0.0;                     ///< wall time of the controller step
 };
@@ -51,6 +52,11 @@ struct JudgeSettings {
   double away_from_hand = 0.05;      ///< m between object and grip point to count as "away"
   double fall_speed = 0.5;           ///< m/s downward with nobody holding it = falling
   double hand_rest_speed = 0.05;     ///< m/s (design notes: hand at rest)
+  /// A run that did not succeed, touched nobody and broke no limit, during
+  /// which the person was unseen (no usable estimate) for at least this share
+  /// of the time before it failed (the drop, else the end), is `no_perception`:
+  /// the robot could not see the person, whatever the person then did.
+  double unseen_share = 0.5;
 };
 
 class OutcomeJudge {
@@ -85,6 +91,8 @@ class OutcomeJudge {
   LimitViolations lim_;
   int qp_failures_ = 0;
   int qp_relaxed_ = 0;
+  double unseen_time_ = 0.0;          // s without a usable estimate of the person
+  double unseen_at_drop_ = 0.0;       // the same, until the drop
   // grasp timing
   std::optional<double> grasp_time_;
   std::optional<double> grasp_pos_err_, grasp_rot_err_;

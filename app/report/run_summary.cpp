@@ -7,7 +7,7 @@ namespace handover::app {
 int runExitCode(const RunSummary& r, bool outcome_expected) {
   if (r.outcome == "error") return 2;
   if (!r.expectation_failures.empty()) return 1;
-  if (!outcome_expected && r.outcome == "unsafe") return 1;
+  if (!outcome_expected && (r.outcome == "unsafe" || r.outcome == "no_perception")) return 1;
   return 0;
 }
 
@@ -30,7 +30,11 @@ std::string RunSummary::toJson() const {
       .endObject();
   w.value("qp_failures", qp_failures);
   w.value("qp_relaxed", qp_relaxed);
-  w.beginObject("tracker").value("source", tracker).value("rejected_samples", static_cast<double>(rejected_samples)).endObject();
+  w.beginObject("tracker").value("source", tracker).value("rejected_samples", static_cast<double>(rejected_samples));
+  w.beginObject("rejected");
+  for (const auto& [why, n] : rejected_by_reason) w.value(why, static_cast<double>(n));
+  w.endObject();
+  w.value("unseen_time", person_unseen_time).endObject();
   if (grasp_error_pos) {
     w.beginObject("grasp_error").value("pos", grasp_error_pos).value("rot_deg", grasp_error_rot_deg).endObject();
   } else {

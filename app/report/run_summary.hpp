@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace handover::app {
@@ -20,7 +21,8 @@ struct TimingStats {
 struct RunSummary {
   std::string scenario;
   std::string mode;             ///< human_to_robot | robot_to_human
-  std::string outcome = "error";///< success | aborted | hand_contact | object_drop | timeout | unsafe | error
+  /// success | aborted | hand_contact | object_drop | timeout | no_perception | unsafe | error
+  std::string outcome = "error";
   std::string error_message;    ///< set when outcome == error
   int handovers = 0, aborts = 0, retries = 0;
   std::optional<double> time_to_grasp;        ///< s
@@ -36,7 +38,10 @@ struct RunSummary {
   int qp_failures = 0;
   int qp_relaxed = 0;                         ///< steps solved only with the collision rows relaxed (not failures)
   std::string tracker = "simulated";          ///< simulated | csv | udp: where the person's poses came from
-  long rejected_samples = 0;                  ///< tracker samples refused (malformed datagrams, non-finite, out of order)
+  long rejected_samples = 0;                  ///< tracker samples refused (malformed datagrams, the estimator's gates)
+  /// the same per reason (perception/reject_counts.hpp names), in that order
+  std::vector<std::pair<std::string, long>> rejected_by_reason;
+  double person_unseen_time = 0.0;            ///< s without a usable (valid, fresh) estimate of the person
   std::optional<double> grasp_error_pos;      ///< m
   std::optional<double> grasp_error_rot_deg;  ///< deg
   std::vector<std::string> states;            ///< visited, in order
@@ -53,9 +58,10 @@ struct RunSummary {
 };
 
 /// The `handover run` exit code (README, docs/outputs.md): 2 for outcome
-/// "error", 1 for unmet expectations, and 1 for an "unsafe" run whose scenario
-/// does not expect that outcome (`outcome_expected` false): scripts must see
-/// an unsafe run fail even without `expect:`. Else 0.
+/// "error", 1 for unmet expectations, and 1 for an "unsafe" or
+/// "no_perception" run whose scenario does not expect an outcome
+/// (`outcome_expected` false): scripts must see an unsafe run, or one that
+/// could not see the person, fail even without `expect:`. Else 0.
 int runExitCode(const RunSummary& r, bool outcome_expected);
 
 }  // namespace handover::app

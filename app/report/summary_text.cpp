@@ -22,7 +22,18 @@ std::string formatSummary(const RunSummary& r) {
   std::snprintf(line, sizeof line, "safety     min distance to person %.3f m, contacts %d, dropped %s\n",
                 r.min_human_distance, r.human_contacts, r.object_dropped ? "yes" : "no");
   os << line;
-  if (r.tracker != "simulated") os << "tracker    " << r.tracker << ", " << r.rejected_samples << " samples rejected\n";
+  if (r.tracker != "simulated" || r.rejected_samples > 0 || r.person_unseen_time > 0.0) {
+    os << "tracker    " << r.tracker << ", " << r.rejected_samples << " samples rejected";
+    bool first = true;
+    for (const auto& [why, n] : r.rejected_by_reason) {
+      if (n == 0) continue;
+      os << (first ? " (" : ", ") << why << " " << n;
+      first = false;
+    }
+    if (!first) os << ")";
+    std::snprintf(line, sizeof line, "; person unseen %.2f s\n", r.person_unseen_time);
+    os << line;
+  }
   std::snprintf(line, sizeof line, "limits     position %d, velocity %d, torque %d steps; QP failures %d, relaxed %d\n",
                 r.limit_violations.position, r.limit_violations.velocity, r.limit_violations.torque, r.qp_failures,
                 r.qp_relaxed);

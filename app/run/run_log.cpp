@@ -1,5 +1,6 @@
 #include "app/run/run_log.hpp"
 #include "app/report/output_files.hpp"
+#include "perception/reject_counts.hpp"
 
 #include <sstream>
 
@@ -41,6 +42,10 @@ RunLog::RunLog() {
   for (const char* c : {"load_share", "load_fx", "load_fy", "load_fz", "ff_fx", "ff_fy", "ff_fz", "grip_force"})
     columns_.push_back(c);
   columns_.push_back("qp_slack");  // widening of the collision rows when relaxed (m/s^2), else 0
+  // sensing (issue 16): a usable estimate of the person; samples refused so far, per reason
+  columns_.push_back("person_seen");
+  for (int k = 0; k < perception::kRejectReasons; ++k)
+    columns_.push_back(std::string("rejected_") + perception::toString(static_cast<perception::RejectReason>(k)));
   numeric_ = columns_.size() - 1;  // every column but the state name
 }
 

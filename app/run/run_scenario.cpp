@@ -271,6 +271,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
       }
       f.qp_failed = controller.lastStepFellBack();
       f.qp_relaxed = controller.lastStepRelaxed();
+      f.person_seen = est.human.valid && !est.human.stale;
       f.state = state;
       f.step_us = step_us;
       judge.observe(f);
@@ -307,6 +308,10 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
         log.putVec(cw.feedForward().data(), 3);
         log.put(adapter.gripperForce());
         log.put(controller.lastSlack());
+        log.put(f.person_seen ? 1.0 : 0.0);
+        perception::RejectCounts rejects = cycle.rejects();
+        if (udp) rejects.add(perception::RejectReason::kMalformed, udp->malformed());
+        for (long n : rejects.count) log.put(static_cast<double>(n));
         log.end();
       }
 
@@ -354,7 +359,13 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
     r.error_message = error;
   }
   r.tracker = tracker ? (udp ? "udp" : "csv") : "simulated";
-  r.rejected_samples = cycle.rejectedSamples() + (udp ? udp->malformed() : 0);
+  perception::RejectCounts rejects = cycle.rejects();
+  if (udp) rejects.add(perception::RejectReason::kMalformed, udp->malformed());
+  r.rejected_samples = rejects.total();
+  for (int k = 0; k < perception::kRejectReasons; ++k) {
+    const auto why = static_cast<perception::RejectReason>(k);
+    r.rejected_by_reason.emplace_back(perception::toString(why), rejects[why]);
+  }
   r.expectation_failures = checkExpectations(sc, r);
 
   if (!opt.out_dir.empty()) {

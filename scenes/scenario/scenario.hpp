@@ -86,7 +86,7 @@ struct HumanSpec {
 };
 
 struct Expectations {
-  std::optional<std::string> outcome;   ///< success | aborted | hand_contact | object_drop | timeout | unsafe | error
+  std::optional<std::string> outcome;   ///< success | aborted | hand_contact | object_drop | timeout | no_perception | unsafe | error
   std::optional<int> aborts, retries, handovers;
   std::optional<double> max_total_time;      ///< s, summary total_time <= this
   std::optional<double> min_human_distance;  ///< m, summary min_human_distance >= this

@@ -300,7 +300,7 @@ void readSensor(const YamlReader& r, perception::SensorSettings& s) {
 void readExpect(const YamlReader& r, Expectations& e, double duration) {
   if (!r.isMap()) r.fail("expected a map");
   if (auto c = r.optionalChild("outcome"))
-    e.outcome = c->asEnum({"success", "aborted", "hand_contact", "object_drop", "timeout", "unsafe", "error"});
+    e.outcome = c->asEnum({"success", "aborted", "hand_contact", "object_drop", "timeout", "no_perception", "unsafe", "error"});
   if (auto c = r.optionalChild("aborts")) e.aborts = nonNegativeInt(*c);
   if (auto c = r.optionalChild("retries")) e.retries = nonNegativeInt(*c);
   if (auto c = r.optionalChild("handovers")) e.handovers = nonNegativeInt(*c);

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "perception/csv_pose_source.hpp"
@@ -18,8 +20,9 @@ PoseSample at(double t, double x) {
 }
 }  // namespace
 
-TEST(PerceptionEstimator, StaleAfterMaxGapAndNeverExtrapolates) {
+TEST(PerceptionEstimator, SmoothingIsStaleAfterMaxGapAndNeverExtrapolates) {
   EstimatorSettings cfg;
+  cfg.model = MotionModel::kSmoothing;
   cfg.max_gap = 0.1;
   PerceptionEstimator est(cfg);
   EXPECT_FALSE(est.estimate(0.0, ObjectHolder::Person).human.valid);
@@ -76,6 +79,7 @@ TEST(PerceptionEstimator, ObjectPoseFromWhoeverHoldsIt) {
 TEST(PerceptionEstimator, TrackedObjectPoseReplacesTheHandOffset) {
   EstimatorSettings cfg;
   cfg.hand_T_object.translation() = Eigen::Vector3d(0.0, 0.0, 0.05);
+  cfg.model = MotionModel::kSmoothing;
   cfg.smoothing_time = 0.03;
   PerceptionEstimator est(cfg);
   PoseSample s = at(1.0, 0.5);
@@ -133,4 +137,53 @@ TEST(PerceptionEstimator, SteadyLatencyIsNotStalenessButLateSamplesAre) {
   const auto& e2 = est2.estimate(1.3 + period, ObjectHolder::Person);
   EXPECT_TRUE(e2.human.valid);
   EXPECT_TRUE(e2.human.stale);
+}
+
+// issue 16: a sensor 0.2 s late made the robot follow where the hand was
+// 0.2 s ago (a hand at 1 m/s: 0.2 m behind); the estimate is now predicted
+// forward by the sample's age
+TEST(PerceptionEstimator, LatencyIsCompensatedByPrediction) {
+  EstimatorSettings cfg;  // the Kalman filter, predicted up to prediction_horizon
+  PerceptionEstimator est(cfg);
+  const double period = 1.0 / 60, latency = 0.2, speed = 1.0;
+  double worst = 0.0;
+  for (int k = 0; k < 90; ++k) {
+    const double stamp = 1.0 + k * period, now = stamp + latency;
+    ASSERT_TRUE(est.addSample(at(stamp, 0.3 + speed * (stamp - 1.0)), now));
+    const auto& e = est.estimate(now, ObjectHolder::Person);
+    EXPECT_FALSE(e.human.stale);
+    if (k >= 45) worst = std::max(worst, std::abs(e.human.hand.translation().x() - (0.3 + speed * (now - 1.0))));
+  }
+  EXPECT_LT(worst, 0.01);
+  // and between samples, the estimate moves on with the hand
+  const double last = 1.0 + 89 * period + latency;
+  const double x0 = est.estimate(last, ObjectHolder::Person).human.hand.translation().x();
+  const double x1 = est.estimate(last + 0.01, ObjectHolder::Person).human.hand.translation().x();
+  EXPECT_NEAR(x1 - x0, 0.01, 1e-3);
+}
+
+// issue 16: a latency above max_latency (0.1 s, while the scenario contract
+// allows 1 s) made every sample stale and the robot never moved
+TEST(PerceptionEstimator, ALatencyTheContractAllowsIsNotStale) {
+  PerceptionEstimator est;  // product defaults
+  const double period = 1.0 / 60, latency = 0.9;
+  for (int k = 0; k < 10; ++k) ASSERT_TRUE(est.addSample(at(k * period, 0.5), k * period + latency));
+  EXPECT_FALSE(est.estimate(9 * period + latency, ObjectHolder::Person).human.stale);
+}
+
+// the Kalman filter's rotation made a presented object jitter in the hand
+// (give, noisy sensing: the arm never settled in Present); rotations are
+// smoothed first-order as before, positions filtered and predicted
+TEST(PerceptionEstimator, KalmanPositionsWithSmoothedRotations) {
+  EstimatorSettings cfg;
+  cfg.rotation_smoothing_time = 0.1;
+  ASSERT_TRUE(cfg.smooth_rotations);
+  PerceptionEstimator est(cfg);
+  PoseSample a = at(1.0, 0.5), b = at(1.0 + 1.0 / 60, 0.5);
+  b.hand.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ()));  // +0.1 rad
+  ASSERT_TRUE(est.addSample(a));
+  ASSERT_TRUE(est.addSample(b));
+  const double w = 1.0 - std::exp(-(1.0 / 60) / 0.1);
+  const Eigen::AngleAxisd got(est.estimate(b.stamp, ObjectHolder::Person).human.hand.linear());
+  EXPECT_NEAR(got.angle(), 0.3 + w * 0.1, 1e-6);
 }

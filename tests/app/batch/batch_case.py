@@ -32,7 +32,7 @@ RESULT_COLUMNS = [
     "expected_outcome", "met", "drop_time", "drop_reason", "qp_relaxed",
 ]
 TIMING_COLUMNS = {"control_step_us_median", "control_step_us_p99", "control_step_us_max", "realtime_factor"}
-OUTCOMES = ["success", "aborted", "hand_contact", "object_drop", "timeout", "unsafe", "error"]
+OUTCOMES = ["success", "aborted", "hand_contact", "object_drop", "timeout", "no_perception", "unsafe", "error"]
 
 failures = []
 

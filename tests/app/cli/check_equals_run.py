@@ -206,7 +206,9 @@ def tracker(a, work):
     else:
         with open(os.path.join(out, "summary.json")) as f:
             s = json.load(f)
-        if s.get("tracker") != {"source": "csv", "rejected_samples": 0}:
+        t = s.get("tracker") or {}
+        if t.get("source") != "csv" or t.get("rejected_samples") != 0 or \
+                any(t.get("rejected", {"?": 1}).values()):
             fail("CSV run: summary tracker %r" % s.get("tracker"))
 
     # UDP: malformed datagrams are counted in the summary and on screen

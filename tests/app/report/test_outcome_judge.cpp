@@ -17,6 +17,7 @@ struct Script {
   bool drop = false;
   bool qp_fail = false;
   int relaxed_steps = 0;  ///< steps solved with the collision rows relaxed
+  double seen_from = 0.0, seen_until = 1e9;  ///< s, perception has a usable estimate of the person in between
 };
 
 RunSummary play(const Script& sc, const std::string& fsm_outcome = "success") {
@@ -43,6 +44,7 @@ RunSummary play(const Script& sc, const std::string& fsm_outcome = "success") {
     f.min_human_distance = 0.2 - 0.01 * std::min(f.time, 1.0);
     f.state = f.time < sc.t_grasp ? &approach : (f.time < sc.t_release ? &grasp : &retract);
     f.step_us = 10.0 + (i % 10);
+    f.person_seen = f.time >= sc.seen_from && f.time < sc.seen_until;
     judge.observe(f);
   }
   return judge.finish(true, fsm_outcome, 1, 0, 0, 1.0);
@@ -151,6 +153,45 @@ TEST(OutcomeJudge, RobotToHumanNeedsObjectInHandAndFingersOff) {
   }
   EXPECT_TRUE(judge.exchanged());
   EXPECT_EQ(judge.finish(true, "success", 1, 0, 0, 0.5).outcome, "success");
+}
+
+}  // namespace
+}  // namespace handover::app
+
+namespace handover::app {
+namespace {
+
+// issue 16: a person the robot could not see (no usable sample, a source
+// stale for the whole run) ended as object_drop or timeout (the scripted
+// person giving up), not as what happened
+TEST(OutcomeJudge, APersonNeverSeenIsNoPerceptionNotADropOrTimeout) {
+  Script drop;
+  drop.drop = true;
+  drop.seen_from = 1e9;  // never
+  const RunSummary r = play(drop, "");
+  EXPECT_EQ(r.outcome, "no_perception");
+  EXPECT_TRUE(r.object_dropped);  // what physically happened is still reported
+  EXPECT_NEAR(r.person_unseen_time, 3.0, 2e-3);
+
+  Script wait;
+  wait.t_release = 10.0;
+  wait.seen_until = 0.5;  // the tracker died after 0.5 s of a 3 s run
+  EXPECT_EQ(play(wait, "").outcome, "no_perception");
+}
+
+TEST(OutcomeJudge, AShortBlindSpellOrAContactKeepsTheirOutcome) {
+  Script drop;
+  drop.drop = true;  // drops at 2.0 s
+  drop.seen_from = 0.5;  // unseen for the first 0.5 s only
+  EXPECT_EQ(play(drop).outcome, "object_drop");
+  Script touch;
+  touch.touch_person = true;
+  touch.t_release = 10.0;
+  touch.seen_from = 1e9;
+  EXPECT_EQ(play(touch, "").outcome, "hand_contact");  // blind or not, a touch is a touch
+  Script clean;
+  clean.seen_from = 1e9;  // never seen, yet the exchange happened: a success is a success
+  EXPECT_EQ(play(clean).outcome, "success");
 }
 
 }  // namespace

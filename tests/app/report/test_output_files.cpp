@@ -10,6 +10,7 @@
 
 #include "app/report/output_files.hpp"
 #include "app/report/run_summary.hpp"
+#include "app/report/summary_text.hpp"
 
 namespace fs = std::filesystem;
 using namespace handover::app;
@@ -87,6 +88,14 @@ TEST(RunExitCode, UnsafeFailsUnlessExpected) {
   EXPECT_EQ(runExitCode(r, true), 2);
 }
 
+// issue 16: a run that could not see the person fails a script like an unsafe one
+TEST(RunExitCode, NoPerceptionFailsUnlessExpected) {
+  RunSummary r;
+  r.outcome = "no_perception";
+  EXPECT_EQ(runExitCode(r, false), 1);
+  EXPECT_EQ(runExitCode(r, true), 0);  // `expect: outcome: no_perception` held
+}
+
 TEST(RunSummaryJson, CarriesTheTrackerAndItsRejectedSamples) {
   RunSummary r;
   r.outcome = "success";
@@ -96,4 +105,19 @@ TEST(RunSummaryJson, CarriesTheTrackerAndItsRejectedSamples) {
   EXPECT_NE(j.find("\"tracker\": {"), std::string::npos) << j;
   EXPECT_NE(j.find("\"source\": \"udp\""), std::string::npos) << j;
   EXPECT_NE(j.find("\"rejected_samples\": 7"), std::string::npos) << j;
+}
+
+TEST(RunSummaryJson, CarriesTheRejectedSamplesPerReasonAndTheUnseenTime) {
+  RunSummary r;
+  r.outcome = "no_perception";
+  r.rejected_samples = 5;
+  r.rejected_by_reason = {{"workspace", 3}, {"jump", 2}};
+  r.person_unseen_time = 4.5;
+  const std::string j = r.toJson();
+  EXPECT_NE(j.find("\"rejected\": {"), std::string::npos) << j;
+  EXPECT_NE(j.find("\"workspace\": 3"), std::string::npos) << j;
+  EXPECT_NE(j.find("\"jump\": 2"), std::string::npos) << j;
+  EXPECT_NE(j.find("\"unseen_time\": 4.5"), std::string::npos) << j;
+  const std::string screen = formatSummary(r);
+  EXPECT_NE(screen.find("5 samples rejected (workspace 3, jump 2); person unseen 4.50 s"), std::string::npos) << screen;
 }
