@@ -127,6 +127,7 @@ ControllerConfig parseControllerConfig(const YamlReader& root) {
     if (auto c = s->optionalChild("damping")) cfg.fallback.damping = c->checkRange(c->asDouble(), 0.0, 1000.0);
     s->finish();
   }
+  if (auto s = section(root, "limit_guard")) cfg.limit_guard = parseLimitGuardSettings(*s);
   root.finish();
   checkControllerBounds(cfg, root);
   return cfg;

@@ -8,6 +8,7 @@
 
 #include "config/yaml_reader.hpp"
 #include "control/constraints/joint_position_limit.hpp"
+#include "control/safety/limit_guard.hpp"
 #include "control/tasks/pd_gains.hpp"
 #include "control/wrench/contact_wrench.hpp"
 #include "control/wrench/disturbance_observer.hpp"
@@ -72,6 +73,9 @@ struct ControllerConfig {
   struct Fallback {
     double damping = 20.0;  ///< kd of the damped stop qddot = -kd qdot, 1/s
   } fallback;
+
+  /// The last line of defence on every command (safety/limit_guard.hpp).
+  LimitGuardSettings limit_guard;
 };
 
 /// Reads a controller config. Every section and key is optional (defaults
