@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <stdexcept>
 #include <thread>
 
 #include "app/report/outcome_judge.hpp"
@@ -257,6 +258,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
       }
       f.qp_failed = controller.lastStepFellBack();
       f.qp_relaxed = controller.lastStepRelaxed();
+      f.limit_guarded = controller.lastStepGuarded();
       f.state = state;
       f.step_us = step_us;
       judge.observe(f);
@@ -293,6 +295,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
         log.putVec(cw.feedForward().data(), 3);
         log.put(adapter.gripperForce());
         log.put(controller.lastSlack());
+        log.put(static_cast<double>(controller.guardCount()));
         log.end();
       }
 
@@ -302,6 +305,8 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
 #endif
 
       sim.step();
+      // a diverged simulator has reset its world: nothing after it is physics
+      if (sim.diverged()) throw std::runtime_error(sim.divergenceMessage());
       if (paced) {
         // a live tracker speaks in wall-clock time: do not outrun it
         const auto due = wall0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(t + dt));
