@@ -38,6 +38,7 @@ struct StepFacts {
   bool torque_violation = false;
   bool qp_failed = false;
   bool qp_relaxed = false;  ///< solved only with the soft (collision) rows relaxed
+  bool limit_guarded = false;  ///< the limit guard changed the command (control/safety/limit_guard.hpp)
   const std::string* state = nullptr;       ///< full state path; pointer must stay valid for the call
   double step_us = 0.0;                     ///< wall time of the controller step
 };
@@ -80,6 +81,7 @@ class OutcomeJudge {
   LimitViolations lim_;
   int qp_failures_ = 0;
   int qp_relaxed_ = 0;
+  int guarded_ = 0;
   // grasp timing
   std::optional<double> grasp_time_;
   std::optional<double> grasp_pos_err_, grasp_rot_err_;

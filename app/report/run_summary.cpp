@@ -29,6 +29,7 @@ std::string RunSummary::toJson() const {
       .endObject();
   w.value("qp_failures", qp_failures);
   w.value("qp_relaxed", qp_relaxed);
+  w.value("limit_guard_steps", limit_guard_steps);
   w.beginObject("tracker").value("source", tracker).value("rejected_samples", static_cast<double>(rejected_samples)).endObject();
   if (grasp_error_pos) {
     w.beginObject("grasp_error").value("pos", grasp_error_pos).value("rot_deg", grasp_error_rot_deg).endObject();

@@ -34,6 +34,7 @@ struct RunSummary {
   LimitViolations limit_violations;
   int qp_failures = 0;
   int qp_relaxed = 0;                         ///< steps solved only with the collision rows relaxed (not failures)
+  int limit_guard_steps = 0;                  ///< steps whose command the limit guard changed (not violations: it kept the limits)
   std::string tracker = "simulated";          ///< simulated | csv | udp: where the person's poses came from
   long rejected_samples = 0;                  ///< tracker samples refused (malformed datagrams, non-finite, out of order)
   std::optional<double> grasp_error_pos;      ///< m

@@ -40,7 +40,8 @@ RunLog::RunLog() {
   // world axes, the part the dynamics hold as a known wrench, the grip force
   for (const char* c : {"load_share", "load_fx", "load_fy", "load_fz", "ff_fx", "ff_fy", "ff_fz", "grip_force"})
     columns_.push_back(c);
-  columns_.push_back("qp_slack");  // widening of the collision rows when relaxed (m/s^2), else 0
+  columns_.push_back("qp_slack");     // widening of the collision rows when relaxed (m/s^2), else 0
+  columns_.push_back("guard_steps");  // steps so far whose command the limit guard changed
   numeric_ = columns_.size() - 1;  // every column but the state name
 }
 
