@@ -72,6 +72,10 @@ struct ControllerConfig {
 
   struct Fallback {
     double damping = 20.0;  ///< kd of the damped stop qddot = -kd qdot, 1/s
+    /// A run stops when the QP failed in more than this share of the steps
+    /// of the last `window` s (read by the application, app/run/fallback_budget.hpp; 1 = never).
+    double max_share = 0.2;
+    double window = 1.0;    ///< s
   } fallback;
 
   /// The last line of defence on every command (safety/limit_guard.hpp).

@@ -21,7 +21,7 @@ struct RunSummary {
   std::string scenario;
   std::string mode;             ///< human_to_robot | robot_to_human
   std::string outcome = "error";///< success | aborted | hand_contact | object_drop | timeout | unsafe | error
-  std::string error_message;    ///< set when outcome == error
+  std::string error_message;    ///< set when outcome == error, or why an unsafe run was stopped early
   int handovers = 0, aborts = 0, retries = 0;
   std::optional<double> time_to_grasp;        ///< s
   std::optional<double> hand_still_to_grasp;  ///< s, negative: grasped while the hand moved
