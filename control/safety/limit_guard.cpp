@@ -26,6 +26,11 @@ LimitGuard::LimitGuard(const Model& model, const LimitGuardSettings& settings, d
   v_max_ = settings.velocity_scale * model.v_max;
   a_brake_ = settings.deceleration_scale * model.a_max;
   tau_max_ = settings.torque_scale * model.tau_max;
+  projection_.reserve(kArmDofs, 0, kArmDofs);
+  projection_.n_in = kArmDofs;
+  projection_.H.setIdentity();
+  solver_.reserve(kArmDofs, 0, kArmDofs);
+  x_ = Eigen::VectorXd::Zero(kArmDofs);
   reset();
 }
 
@@ -70,20 +75,39 @@ bool LimitGuard::apply(const Data& data, const Vector7& tau_external, Vector7& q
   auto within = [&](const Vector7& t) { return ((t.cwiseAbs() - tau_max_).array() <= 0.0).all(); };
   if (!within(tau)) {
     changed = true;
-    llt_.compute(data.M);
-    for (int round = 0; round < kTorqueRounds; ++round) {
-      tau = tau.cwiseMax(-tau_max_).cwiseMin(tau_max_);
-      qdd = llt_.solve(tau - bias);  // what that torque does
-      qdd = qdd.cwiseMax(lo_).cwiseMin(hi_);
+    // the nearest acceleration in the box whose torque is within the limits
+    projection_.g = -qdd;
+    projection_.C.topRows<kArmDofs>() = data.M;
+    projection_.c_lb.head<kArmDofs>() = -tau_max_ - bias;
+    projection_.c_ub.head<kArmDofs>() = tau_max_ - bias;
+    projection_.x_lb = lo_;
+    projection_.x_ub = hi_;
+    solver_.resetWarmStart();
+    if (solver_.solve(projection_, x_) == QpStatus::kOptimal && x_.allFinite()) {
+      qdd = x_;
       tau.noalias() = data.M * qdd;
       tau += bias;
-      if (within(tau)) break;
     }
-    if (!within(tau)) {
-      // the box is out of the torque's reach: the torque limit holds regardless
-      tau = tau.cwiseMax(-tau_max_).cwiseMin(tau_max_);
-      qdd = llt_.solve(tau - bias);
+    // within the solver's tolerance: a last clamp of a few ulps leaves qdd as solved
+    const auto nearly = [&](const Vector7& t) {
+      return ((t.cwiseAbs() - tau_max_ * (1.0 + 1e-9)).array() <= 0.0).all();
+    };
+    if (!nearly(tau)) {
+      llt_.compute(data.M);
+      for (int round = 0; round < kTorqueRounds && !nearly(tau); ++round) {
+        tau = tau.cwiseMax(-tau_max_).cwiseMin(tau_max_);
+        qdd = llt_.solve(tau - bias);  // what that torque does
+        qdd = qdd.cwiseMax(lo_).cwiseMin(hi_);
+        tau.noalias() = data.M * qdd;
+        tau += bias;
+      }
+      if (!nearly(tau)) {
+        // the box is out of the torque's reach: the torque limit holds regardless
+        tau = tau.cwiseMax(-tau_max_).cwiseMin(tau_max_);
+        qdd = llt_.solve(tau - bias);
+      }
     }
+    tau = tau.cwiseMax(-tau_max_).cwiseMin(tau_max_);
   }
 
   // non-finite model terms (never expected): no torque rather than a wild one

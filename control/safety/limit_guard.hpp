@@ -18,11 +18,14 @@
 // beyond it: the joint does not go further; the QP's damper brings it back).
 // That is a box lo <= qdd <= hi. The commanded qdd is clamped into it, and
 // tau = M qdd + h - tau_ext must then lie within +-torque_scale * tau_max:
-// if not, the torque is clamped, the acceleration it yields is clamped into
-// the box again, and so on for a few rounds (alternating projections); the
-// final torque is always clamped, so the torque limit holds unconditionally,
-// and the position and velocity limits hold whenever braking at a_b is
-// within the torque limits (the datasheet accelerations are).
+// if not, the guard solves the small projection
+//   min |qdd - qdd_box|^2  s.t.  lo <= qdd <= hi,  |M qdd + h - tau_ext| <= tau_lim
+// (7 variables, its own Goldfarb-Idnani instance: no tie to the controller's
+// QP); should that fail (no acceleration in the box is within the torque
+// limits), the torque is clamped and its acceleration clamped into the box a
+// few rounds (alternating projections). The final torque is always clamped,
+// so the torque limit holds unconditionally, and the position and velocity
+// limits hold whenever braking at a_b is within the torque limits.
 //
 // The guard never makes a command more aggressive: a command inside the box
 // and the torque limits passes unchanged (bit for bit). Steps where it changed
@@ -37,6 +40,8 @@
 
 #include "config/yaml_reader.hpp"
 #include "control/model/model.hpp"
+#include "control/qp/goldfarb_idnani.hpp"
+#include "control/qp/qp_problem.hpp"
 #include "control/types.hpp"
 
 namespace handover::control {
@@ -95,6 +100,9 @@ class LimitGuard {
   Vector7 q_min_, q_max_, v_max_, a_brake_, tau_max_;
   Vector7 lo_ = Vector7::Zero(), hi_ = Vector7::Zero();
   Eigen::LLT<Matrix7> llt_;
+  QpProblem projection_;               // 7 variables, 7 torque rows
+  GoldfarbIdnaniSolver solver_;
+  Eigen::VectorXd x_;                  // 7
   long changed_count_ = 0;
   bool last_changed_ = false;
 };

@@ -1,5 +1,6 @@
-// Simulator divergence (issue 16): a person's body placed at an absurd but
-// finite position (1e300 m, as a tracker glitch can) makes MuJoCo find a bad
+// Simulator divergence (issue 16): a person's hand holding the object placed
+// at an absurd but finite position (1e300 m, as a tracker glitch can) makes
+// MuJoCo find a bad
 // acceleration and reset the world. The simulation reports it (diverged(),
 // a message naming what diverged and quoting MuJoCo) until reset(), and
 // MuJoCo's own warning log (MUJOCO_LOG.TXT) is not written into the working
@@ -54,6 +55,9 @@ TEST(Divergence, AbsurdPersonPoseIsReportedAndLeavesNoLog) {
     Simulation sim;
     sim.load();
     ASSERT_TRUE(sim.setHumanPoses(personAway()));
+    // the person holds the object (a weld): a hand at 1e300 m drags it there
+    sim.placeObject(personAway().hand * test::pose(0.0, 0.0, 0.05));
+    sim.setObjectWeld(true);
     for (int i = 0; i < 100; ++i) test::holdStep(sim, test::readyPosture());
     EXPECT_FALSE(sim.diverged());
     EXPECT_EQ(sim.divergenceMessage(), "");
