@@ -30,6 +30,7 @@ Controller::Controller(Model model, const ControllerConfig& config, const Contro
       config_(config),
       formulation_(controllerCapacity()),
       solver_(std::move(solver)),
+      guard_(model_, config.limit_guard, config.period),
       disturbance_(config.disturbance, model_.tau_max, config.period),
       x_(Eigen::VectorXd::Zero(kNumVars)),
       obs_A_(Eigen::MatrixXd::Zero(6, kNumVars)),
@@ -133,6 +134,7 @@ void Controller::reset(const ControlInputs& in) {
   has_observation_ = false;
   if (pose_) pose_->setTarget(X_tcp);
   if (position_limit_) position_limit_->reset();
+  guard_.reset();
   solver_->resetWarmStart();
   qdd_.setZero();
   tau_ = data_.h;
@@ -202,23 +204,22 @@ const Vector7& Controller::step(const ControlInputs& in) {
   fallback_streak_ = 0;
   qdd_ = x_.head<kArmDofs>();
   integrator_.integrate(x_.segment<kObjDofs>(VariableLayout::kObs), config_.period);
-  tau_.noalias() = data_.M * qdd_;
-  tau_ += data_.h - tau_external_;
+  guardCommand();  // tau = M qddot + h - tau_external, within the limits
   return tau_;
 }
+
+void Controller::guardCommand() { guard_.apply(data_, tau_external_, qdd_, tau_); }
 
 void Controller::fallback(const char* why) {
   fell_back_ = true;
   ++fallback_count_;
   ++fallback_streak_;
 
-  // damped stop within the acceleration limits, torque from the model
+  // damped stop within the acceleration limits
   const Vector7 a_lim = config_.limits.acceleration_scale * model_.a_max;
   qdd_ = (-config_.fallback.damping * data_.v).cwiseMax(-a_lim).cwiseMin(a_lim);
-  tau_.noalias() = data_.M * qdd_;
-  tau_ += data_.h - tau_external_;
-  const Vector7 t_lim = config_.limits.torque_scale * model_.tau_max;
-  tau_ = tau_.cwiseMax(-t_lim).cwiseMin(t_lim);
+  // the torque from the model, within the limits, braking before the position limits
+  guardCommand();
 
   // the observed object keeps following its reference model on its own
   const ControlContext ctx = context(time_);

@@ -28,6 +28,11 @@
 // qddot = -kd qdot clipped to the acceleration limits; fallbacks are counted
 // with the QP status and the reason (fallbackStreak, lastFallbackReason), never
 // printed here: the application logs them (the step does no I/O).
+// Either way the command passes the limit guard last (safety/limit_guard.hpp,
+// config limit_guard): from the measured state and the model alone, it keeps
+// every joint able to stop before its position limit, below its velocity
+// limit and within its torque limit, whatever the QP returned (counted:
+// lastStepGuarded, guardCount).
 //
 // Frames: world (design notes 1); spatial vectors [linear; angular]; SI.
 // Real-time safety: step() and every set*/read-out method allocate nothing
@@ -46,6 +51,7 @@
 #include "control/formulation/formulation.hpp"
 #include "control/qp/qp_solver.hpp"
 #include "control/qp/soft_row_relaxation.hpp"
+#include "control/safety/limit_guard.hpp"
 #include "control/tasks/end_effector_pose_task.hpp"
 #include "control/tasks/grasp_frame.hpp"
 #include "control/tasks/observation_task.hpp"
@@ -160,6 +166,11 @@ class Controller {
   /// Consecutive fallback steps up to the last one (0 after a solved step):
   /// an application logs a fallback when this is 1 (and now and then after).
   long fallbackStreak() const { return fallback_streak_; }
+  /// Whether the limit guard changed the last step's command (QP or fallback).
+  bool lastStepGuarded() const { return guard_.lastChanged(); }
+  /// Steps whose command the limit guard changed since reset().
+  long guardCount() const { return guard_.changedCount(); }
+  const LimitGuard& limitGuard() const { return guard_; }
   /// Why the last fallback happened ("" if no detail); static storage.
   const char* lastFallbackReason() const { return fallback_reason_; }
   /// [e_p (m); e_o (rad, or axis error in free-axis mode)] of the tracking task.
@@ -183,6 +194,7 @@ class Controller {
 
  private:
   void fallback(const char* why);
+  void guardCommand();
   ControlContext context(double time) const;
 
   const Model model_;
@@ -192,6 +204,7 @@ class Controller {
   QpProblem problem_;
   std::unique_ptr<QpSolver> solver_;
   SoftRowRelaxation relaxation_;
+  LimitGuard guard_;
   int tcp_id_ = 0;
   int ft_id_ = 0;
   Vector6 external_wrench_ = Vector6::Zero();

@@ -174,8 +174,11 @@ ControllerConfig parseControllerConfig(const YamlReader& root, const JointLimits
   if (auto s = section(root, "disturbance")) cfg.disturbance = parseDisturbanceSettings(*s);
   if (auto s = section(root, "fallback")) {
     if (auto c = s->optionalChild("damping")) cfg.fallback.damping = c->checkRange(c->asDouble(), 0.0, 1000.0);
+    if (auto c = s->optionalChild("max_share")) cfg.fallback.max_share = c->checkRange(c->asDouble(), 0.01, 1.0);
+    if (auto c = s->optionalChild("window")) cfg.fallback.window = c->checkRange(c->asDouble(), 0.01, 60.0);
     s->finish();
   }
+  if (auto s = section(root, "limit_guard")) cfg.limit_guard = parseLimitGuardSettings(*s);
   root.finish();
   checkControllerBounds(cfg, root, joints);
   return cfg;

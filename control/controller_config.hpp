@@ -11,6 +11,7 @@
 #include "config/yaml_reader.hpp"
 #include "control/constraints/joint_position_limit.hpp"
 #include "control/model/joint_limits.hpp"
+#include "control/safety/limit_guard.hpp"
 #include "control/tasks/pd_gains.hpp"
 #include "control/wrench/contact_wrench.hpp"
 #include "control/wrench/disturbance_observer.hpp"
@@ -105,7 +106,14 @@ struct ControllerConfig {
 
   struct Fallback {
     double damping = 20.0;  ///< kd of the damped stop qddot = -kd qdot, 1/s
+    /// A run stops when the QP failed in more than this share of the steps
+    /// of the last `window` s (read by the application, app/run/fallback_budget.hpp; 1 = never).
+    double max_share = 0.2;
+    double window = 1.0;    ///< s
   } fallback;
+
+  /// The last line of defence on every command (safety/limit_guard.hpp).
+  LimitGuardSettings limit_guard;
 };
 
 /// Reads a controller config. Every section and key is optional (defaults

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "app/experiment/experiment_log.hpp"
 #include "app/run/world_setup.hpp"
@@ -232,6 +233,7 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
     if (k % static_cast<std::size_t>(log_every) == 0) log.add(s, row);
 
     sim.step();
+    if (sim.diverged()) throw std::runtime_error(sim.divergenceMessage());
   }
   run.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   run.metrics = computeExperimentMetrics(run.samples, opt.thresholds);

@@ -47,7 +47,7 @@ std::string resultsCsvHeader() {
          "hand_still_to_grasp,total_time,min_human_distance,human_contacts,object_dropped,"
          "limit_position,limit_velocity,limit_torque,qp_failures,grasp_error_pos,grasp_error_rot_deg,"
          "control_step_us_median,control_step_us_p99,control_step_us_max,realtime_factor,error,"
-         "index,direction,grasp,shape,behaviour,placement,hand,height,category,expected_outcome,met,drop_time,drop_reason,qp_relaxed";
+         "index,direction,grasp,shape,behaviour,placement,hand,height,category,expected_outcome,met,drop_time,drop_reason,qp_relaxed,limit_guard";
 }
 
 std::string resultsCsvRow(const BatchEntry& e) {
@@ -65,7 +65,7 @@ std::string resultsCsvRow(const BatchEntry& e) {
      << e.category.grasp << ',' << e.category.shape << ',' << e.category.behaviour << ',' << e.category.placement
      << ',' << e.category.hand << ',' << e.category.height << ',' << scenario::categoryLabel(e.category) << ','
      << e.expected_outcome << ',' << (e.expectation_met ? 1 : 0) << ',' << num(s.drop_time) << ',' << s.drop_reason
-     << ',' << s.qp_relaxed;
+     << ',' << s.qp_relaxed << ',' << s.limit_guard_steps;
   return os.str();
 }
 
@@ -171,6 +171,7 @@ std::vector<BatchEntry> parseResultsCsv(const std::string& text, const std::stri
     s.limit_violations = {integer("limit_position"), integer("limit_velocity"), integer("limit_torque")};
     s.qp_failures = integer("qp_failures");
     s.qp_relaxed = integer("qp_relaxed");  // 0 in results of older versions
+    s.limit_guard_steps = integer("limit_guard");  // 0 in results of older versions
     s.grasp_error_pos = real("grasp_error_pos");
     s.grasp_error_rot_deg = real("grasp_error_rot_deg");
     s.control_step_us = {real("control_step_us_median").value_or(0.0), real("control_step_us_p99").value_or(0.0),
@@ -186,7 +187,7 @@ std::string batchSummaryJson(const std::vector<BatchEntry>& entries, const Shard
   for (const auto& n : outcomeNames()) count[n] = 0;
   Mean ttg, total, still;
   double min_dist = INFINITY;
-  int lim_pos = 0, lim_vel = 0, lim_tau = 0, qp = 0, relaxed = 0, aborts = 0, retries = 0, contacts = 0;
+  int lim_pos = 0, lim_vel = 0, lim_tau = 0, qp = 0, relaxed = 0, guarded = 0, aborts = 0, retries = 0, contacts = 0;
   for (const auto& e : entries) {
     const RunSummary& s = e.summary;
     ++count[s.outcome];
@@ -201,6 +202,7 @@ std::string batchSummaryJson(const std::vector<BatchEntry>& entries, const Shard
     lim_tau += s.limit_violations.torque;
     qp += s.qp_failures;
     relaxed += s.qp_relaxed;
+    guarded += s.limit_guard_steps;
     aborts += s.aborts;
     retries += s.retries;
     contacts += s.human_contacts;
@@ -231,6 +233,7 @@ std::string batchSummaryJson(const std::vector<BatchEntry>& entries, const Shard
   w.beginObject("limit_violations").value("position", lim_pos).value("velocity", lim_vel).value("torque", lim_tau).endObject();
   w.value("qp_failures", qp);
   w.value("qp_relaxed", relaxed);
+  w.value("limit_guard_steps", guarded);
   int met = 0;
   std::map<std::string, std::pair<int, int>> by_category;  // label -> (runs, met)
   for (const auto& e : entries) {

@@ -122,7 +122,7 @@ std::string benchmarkReportMarkdown(const std::vector<BatchEntry>& entries, cons
   for (std::size_t i = 0; i < cells.size() && i < 15; ++i) md << row(cells[i]);
   md << "\n";
 
-  int contacts = 0, lim_pos = 0, lim_vel = 0, lim_tau = 0, qp = 0, relaxed = 0, contact_runs = 0, drops = 0;
+  int contacts = 0, lim_pos = 0, lim_vel = 0, lim_tau = 0, qp = 0, relaxed = 0, guarded = 0, contact_runs = 0, drops = 0;
   for (const auto& e : entries) {
     contacts += e.summary.human_contacts;
     contact_runs += e.summary.human_contacts > 0 ? 1 : 0;
@@ -132,12 +132,14 @@ std::string benchmarkReportMarkdown(const std::vector<BatchEntry>& entries, cons
     lim_tau += e.summary.limit_violations.torque;
     qp += e.summary.qp_failures;
     relaxed += e.summary.qp_relaxed;
+    guarded += e.summary.limit_guard_steps;
   }
   md << "## Safety totals\n\n"
      << "| runs with a person contact | contacts | runs with the object dropped | limit-violation steps "
-        "(position / velocity / torque) | QP failures | steps with collision rows relaxed |\n|---:|---:|---:|---|---:|---:|\n"
+        "(position / velocity / torque) | QP failures | steps with collision rows relaxed | steps the limit guard "
+        "changed |\n|---:|---:|---:|---|---:|---:|---:|\n"
      << "| " << contact_runs << " | " << contacts << " | " << drops << " | " << lim_pos << " / " << lim_vel << " / "
-     << lim_tau << " | " << qp << " | " << relaxed << " |\n";
+     << lim_tau << " | " << qp << " | " << relaxed << " | " << guarded << " |\n";
   return md.str();
 }
 

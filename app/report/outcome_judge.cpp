@@ -44,6 +44,7 @@ void OutcomeJudge::observe(const StepFacts& f) {
   lim_.torque += f.torque_violation ? 1 : 0;
   qp_failures_ += f.qp_failed ? 1 : 0;
   qp_relaxed_ += f.qp_relaxed ? 1 : 0;
+  guarded_ += f.limit_guarded ? 1 : 0;
 
   // the person's hand at rest (for hand_still_to_grasp)
   if (f.hand_speed < s_.hand_rest_speed) {
@@ -103,6 +104,7 @@ RunSummary OutcomeJudge::finish(bool fsm_done, const std::string& fsm_outcome, i
   r.qp_failures = qp_failures_;
   r.qp_relaxed = qp_relaxed_;
   r.person_unseen_time = unseen_time_;
+  r.limit_guard_steps = guarded_;
   r.grasp_error_pos = grasp_pos_err_;
   r.grasp_error_rot_deg = grasp_rot_err_;
   r.states = states_;

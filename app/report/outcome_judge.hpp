@@ -42,6 +42,7 @@ struct StepFacts {
   bool qp_failed = false;
   bool qp_relaxed = false;  ///< solved only with the soft (collision) rows relaxed
   bool person_seen = true;  ///< perception had a usable (valid, not stale) estimate of the person
+  bool limit_guarded = false;  ///< the limit guard changed the command (control/safety/limit_guard.hpp)
   const std::string* state = nullptr;       ///< full state path; pointer must stay valid for the call
   double step_us = 0.0;                     ///< wall time of the controller step
 };
@@ -93,6 +94,7 @@ class OutcomeJudge {
   int qp_relaxed_ = 0;
   double unseen_time_ = 0.0;          // s without a usable estimate of the person
   double unseen_at_drop_ = 0.0;       // the same, until the drop
+  int guarded_ = 0;
   // grasp timing
   std::optional<double> grasp_time_;
   std::optional<double> grasp_pos_err_, grasp_rot_err_;

@@ -30,6 +30,7 @@ std::string RunSummary::toJson() const {
       .endObject();
   w.value("qp_failures", qp_failures);
   w.value("qp_relaxed", qp_relaxed);
+  w.value("limit_guard_steps", limit_guard_steps);
   w.beginObject("tracker").value("source", tracker).value("rejected_samples", static_cast<double>(rejected_samples));
   w.beginObject("rejected");
   for (const auto& [why, n] : rejected_by_reason) w.value(why, static_cast<double>(n));

@@ -23,7 +23,7 @@ struct RunSummary {
   std::string mode;             ///< human_to_robot | robot_to_human
   /// success | aborted | hand_contact | object_drop | timeout | no_perception | unsafe | error
   std::string outcome = "error";
-  std::string error_message;    ///< set when outcome == error
+  std::string error_message;    ///< set when outcome == error, or why an unsafe run was stopped early
   int handovers = 0, aborts = 0, retries = 0;
   std::optional<double> time_to_grasp;        ///< s
   std::optional<double> hand_still_to_grasp;  ///< s, negative: grasped while the hand moved
@@ -37,6 +37,7 @@ struct RunSummary {
   LimitViolations limit_violations;
   int qp_failures = 0;
   int qp_relaxed = 0;                         ///< steps solved only with the collision rows relaxed (not failures)
+  int limit_guard_steps = 0;                  ///< steps whose command the limit guard changed (not violations: it kept the limits)
   std::string tracker = "simulated";          ///< simulated | csv | udp: where the person's poses came from
   long rejected_samples = 0;                  ///< tracker samples refused (malformed datagrams, the estimator's gates)
   /// the same per reason (perception/reject_counts.hpp names), in that order

@@ -34,9 +34,10 @@ std::string formatSummary(const RunSummary& r) {
     std::snprintf(line, sizeof line, "; person unseen %.2f s\n", r.person_unseen_time);
     os << line;
   }
-  std::snprintf(line, sizeof line, "limits     position %d, velocity %d, torque %d steps; QP failures %d, relaxed %d\n",
+  std::snprintf(line, sizeof line,
+                "limits     position %d, velocity %d, torque %d steps; QP failures %d, relaxed %d; limit guard %d\n",
                 r.limit_violations.position, r.limit_violations.velocity, r.limit_violations.torque, r.qp_failures,
-                r.qp_relaxed);
+                r.qp_relaxed, r.limit_guard_steps);
   os << line;
   if (r.grasp_error_pos) {
     std::snprintf(line, sizeof line, "grasp      error %.1f mm, %.1f deg\n", *r.grasp_error_pos * 1000.0,

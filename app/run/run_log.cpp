@@ -46,6 +46,7 @@ RunLog::RunLog() {
   columns_.push_back("person_seen");
   for (int k = 0; k < perception::kRejectReasons; ++k)
     columns_.push_back(std::string("rejected_") + perception::toString(static_cast<perception::RejectReason>(k)));
+  columns_.push_back("guard_steps");  // steps so far whose command the limit guard changed
   numeric_ = columns_.size() - 1;  // every column but the state name
 }
 

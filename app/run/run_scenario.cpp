@@ -8,10 +8,12 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <stdexcept>
 #include <thread>
 
 #include "app/report/outcome_judge.hpp"
 #include "app/report/output_files.hpp"
+#include "app/run/fallback_budget.hpp"
 #include "app/run/run_log.hpp"
 #include "app/run/world_setup.hpp"
 #include "app/validate/person_trunk.hpp"
@@ -166,6 +168,8 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   const std::string* state = &machine.activePath();
   double done_at = -1.0;
   std::string error;
+  std::string stopped;  // why an unsafe run was stopped early ("" if not)
+  FallbackBudget fallback_budget(cs.controller.fallback.window, dt, cs.controller.fallback.max_share);
   const auto wall0 = Clock::now();
   double next_progress = 0.0;
 
@@ -272,6 +276,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
       f.qp_failed = controller.lastStepFellBack();
       f.qp_relaxed = controller.lastStepRelaxed();
       f.person_seen = est.human.valid && !est.human.stale;
+      f.limit_guarded = controller.lastStepGuarded();
       f.state = state;
       f.step_us = step_us;
       judge.observe(f);
@@ -312,6 +317,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
         perception::RejectCounts rejects = cycle.rejects();
         if (udp) rejects.add(perception::RejectReason::kMalformed, udp->malformed());
         for (long n : rejects.count) log.put(static_cast<double>(n));
+        log.put(static_cast<double>(controller.guardCount()));
         log.end();
       }
 
@@ -321,6 +327,18 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
 #endif
 
       sim.step();
+      // a diverged simulator has reset its world: nothing after it is physics
+      if (sim.diverged()) throw std::runtime_error(sim.divergenceMessage());
+      // a controller that keeps failing its QP holds the arm in the damped stop: nothing follows
+      if (fallback_budget.observe(controller.lastStepFellBack())) {
+        char why[200];
+        std::snprintf(why, sizeof why,
+                      "stopped at t = %.3f s: the QP failed in %d of the last %zu steps (fallback.max_share %.2f); "
+                      "the arm was held by the damped stop",
+                      t, fallback_budget.count(), fallback_budget.windowSteps(), cs.controller.fallback.max_share);
+        stopped = why;
+        break;
+      }
       if (paced) {
         // a live tracker speaks in wall-clock time: do not outrun it
         const auto due = wall0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(t + dt));
@@ -357,6 +375,8 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   if (!error.empty()) {
     r.outcome = "error";
     r.error_message = error;
+  } else if (!stopped.empty()) {
+    r.error_message = stopped;  // the outcome stays as judged (unsafe: the QP failed)
   }
   r.tracker = tracker ? (udp ? "udp" : "csv") : "simulated";
   perception::RejectCounts rejects = cycle.rejects();

@@ -10,6 +10,7 @@
 #include <mujoco/mujoco.h>
 
 #include "config/input_error.hpp"
+#include "scenes/sim/mujoco_messages.hpp"
 #include "scenes/sim/scene_builder.hpp"
 
 namespace handover::sim {
@@ -69,6 +70,7 @@ void Simulation::load(const SimOptions& options_in) {
   if (options.scene_path.empty()) options.scene_path = defaultScenePath();
   const std::string& path = options.scene_path;
 
+  installMujocoMessageHandlers();  // MuJoCo's warnings stay out of the user's folder
   std::ifstream in(path);
   if (!in) throw InputError("scene file " + path + ": cannot be opened (missing or unreadable)");
   std::stringstream buffer;
@@ -204,6 +206,10 @@ void Simulation::reset(const Eigen::Matrix<double, 7, 1>& q0, double finger_widt
     throw InputError("Simulation::reset: non-finite start configuration");
   }
   mj_resetData(m_, d_);  // also puts the mocap bodies back at their scene poses
+  diverged_at_ = -1.0;
+  divergence_kind_ = -1;
+  divergence_dof_ = -1;
+  clearMujocoWarning();
   m_->eq_active[weld_] = 0;
   std::copy(weld_data0_.begin(), weld_data0_.end(), m_->eq_data + mjNEQDATA * weld_);
 
@@ -223,7 +229,40 @@ void Simulation::reset(const Eigen::Matrix<double, 7, 1>& q0, double finger_widt
   mj_forward(m_, d_);
 }
 
-void Simulation::step() { mj_step(m_, d_); }
+void Simulation::step() {
+  const double t0 = d_->time;
+  for (int w : {mjWARN_BADQPOS, mjWARN_BADQVEL, mjWARN_BADQACC}) d_->warning[w].number = 0;
+  mj_step(m_, d_);
+  if (diverged()) return;
+  // MuJoCo resets the world when the state turns bad: the counters say why,
+  // the clock going back says that it happened
+  for (int w : {mjWARN_BADQPOS, mjWARN_BADQVEL, mjWARN_BADQACC}) {
+    if (d_->warning[w].number > 0) {
+      divergence_kind_ = w;
+      divergence_dof_ = d_->warning[w].lastinfo;
+      diverged_at_ = t0;
+      return;
+    }
+  }
+  if (!(d_->time > t0)) diverged_at_ = t0;
+}
+
+std::string Simulation::divergenceMessage() const {
+  if (!diverged()) return "";
+  const char* what = divergence_kind_ == mjWARN_BADQPOS   ? "position"
+                     : divergence_kind_ == mjWARN_BADQVEL ? "velocity"
+                     : divergence_kind_ == mjWARN_BADQACC ? "acceleration"
+                                                          : "state";
+  std::ostringstream os;
+  os << "the simulation diverged at t = " << diverged_at_ << " s (a NaN, infinite or huge " << what;
+  if (divergence_dof_ >= 0) os << " at MuJoCo dof " << divergence_dof_;
+  os << "; MuJoCo reset the world)";
+  std::string warning = trimmed(lastMujocoWarning());
+  while (!warning.empty() && (warning.back() == '.' || warning.back() == ' ')) warning.pop_back();
+  if (!warning.empty()) os << ": MuJoCo: " << warning;
+  os << "; look for absurd inputs (tracker values, scenario poses or settings)";
+  return os.str();
+}
 
 ArmState Simulation::armState() const {
   ArmState s;

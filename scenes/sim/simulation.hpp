@@ -52,8 +52,18 @@ class Simulation : public io::ArmDriver {
   void reset(const Eigen::Matrix<double, 7, 1>& q0, double finger_width,
              const std::optional<Eigen::Isometry3d>& object_in_tcp = std::nullopt);
 
-  /// One physics step of timestep() (1 ms). Real-time safe.
+  /// One physics step of timestep() (1 ms). Real-time safe. When MuJoCo
+  /// finds the state diverged (a NaN, infinite or huge position, velocity or
+  /// acceleration: it warns and resets the whole world to the model's rest
+  /// state, time 0), the step is marked: diverged() turns true and stays so
+  /// until reset(). MuJoCo's warning is not printed and writes no
+  /// MUJOCO_LOG.TXT (mujoco_messages.hpp).
   void step();
+  /// Whether a step since the last reset() diverged (see step()). Real-time safe.
+  bool diverged() const { return diverged_at_ >= 0.0; }
+  /// What diverged and when, for the run's error message ("" while not
+  /// diverged). Allocates: not real-time.
+  std::string divergenceMessage() const;
 
   /// Joint state, finger width, applied torques and wrist wrench. The wrench
   /// is [force; torque] that the hand (with fingers and whatever they hold)
@@ -155,6 +165,9 @@ class Simulation : public io::ArmDriver {
   int forearm_geom_ = -1, upper_arm_geom_ = -1;
   std::array<double, 11> weld_data0_{};  ///< eq_data as compiled (restored by reset)
   std::vector<unsigned char> geom_role_;   ///< GeomRole per geom
+  double diverged_at_ = -1.0;              ///< s, time of the step that diverged (-1: none)
+  int divergence_kind_ = -1;               ///< mjtWarning of it (mjWARN_BADQPOS/QVEL/QACC), -1 when unknown
+  int divergence_dof_ = -1;                ///< MuJoCo's dof index in the warning
 };
 
 }  // namespace handover::sim

@@ -29,7 +29,7 @@ RESULT_COLUMNS = [
     "grasp_error_rot_deg", "control_step_us_median", "control_step_us_p99", "control_step_us_max",
     "realtime_factor", "error",
     "index", "direction", "grasp", "shape", "behaviour", "placement", "hand", "height", "category",
-    "expected_outcome", "met", "drop_time", "drop_reason", "qp_relaxed",
+    "expected_outcome", "met", "drop_time", "drop_reason", "qp_relaxed", "limit_guard",
 ]
 TIMING_COLUMNS = {"control_step_us_median", "control_step_us_p99", "control_step_us_max", "realtime_factor"}
 OUTCOMES = ["success", "aborted", "hand_contact", "object_drop", "timeout", "no_perception", "unsafe", "error"]

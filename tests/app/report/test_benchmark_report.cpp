@@ -60,6 +60,7 @@ TEST(ResultsCsv, RoundTripKeepsWhatTheReportReads) {
   runs[1].summary.limit_violations = {3, 2, 1};
   runs[1].summary.qp_failures = 7;
   runs[1].summary.qp_relaxed = 12;
+  runs[1].summary.limit_guard_steps = 40;
   runs[1].summary.human_contacts = 2;
   const std::vector<BatchEntry> back = parseResultsCsv(resultsCsv(runs), "results.csv");
   ASSERT_EQ(back.size(), 2u);
@@ -75,6 +76,7 @@ TEST(ResultsCsv, RoundTripKeepsWhatTheReportReads) {
   EXPECT_EQ(back[1].summary.limit_violations.velocity, 2);
   EXPECT_EQ(back[1].summary.qp_failures, 7);
   EXPECT_EQ(back[1].summary.qp_relaxed, 12);
+  EXPECT_EQ(back[1].summary.limit_guard_steps, 40);
   // what is computed from the rows read back is what was computed from the runs
   EXPECT_EQ(benchmarkReportMarkdown(back, "t"), benchmarkReportMarkdown(runs, "t"));
 }

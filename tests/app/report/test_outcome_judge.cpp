@@ -18,6 +18,7 @@ struct Script {
   bool qp_fail = false;
   int relaxed_steps = 0;  ///< steps solved with the collision rows relaxed
   double seen_from = 0.0, seen_until = 1e9;  ///< s, perception has a usable estimate of the person in between
+  int guarded_steps = 0;  ///< steps whose command the limit guard changed
 };
 
 RunSummary play(const Script& sc, const std::string& fsm_outcome = "success") {
@@ -41,6 +42,7 @@ RunSummary play(const Script& sc, const std::string& fsm_outcome = "success") {
     f.human_penetration = sc.penetrate_person && f.time >= 1.3 && f.time < 1.4;
     f.qp_failed = sc.qp_fail && i == 100;
     f.qp_relaxed = i >= 200 && i < 200 + sc.relaxed_steps;
+    f.limit_guarded = i >= 300 && i < 300 + sc.guarded_steps;
     f.min_human_distance = 0.2 - 0.01 * std::min(f.time, 1.0);
     f.state = f.time < sc.t_grasp ? &approach : (f.time < sc.t_release ? &grasp : &retract);
     f.step_us = 10.0 + (i % 10);
@@ -124,6 +126,16 @@ TEST(OutcomeJudge, RelaxedStepsAreCountedNotFailures) {
   EXPECT_EQ(r.outcome, "success");
   EXPECT_EQ(r.qp_relaxed, 30);
   EXPECT_EQ(r.qp_failures, 0);
+}
+
+TEST(OutcomeJudge, LimitGuardStepsAreCountedNotViolations) {
+  // the guard kept the limits: counted, and no reason for "unsafe"
+  Script sc;
+  sc.guarded_steps = 25;
+  const RunSummary r = play(sc);
+  EXPECT_EQ(r.outcome, "success");
+  EXPECT_EQ(r.limit_guard_steps, 25);
+  EXPECT_EQ(r.limit_violations.position + r.limit_violations.velocity + r.limit_violations.torque, 0);
 }
 
 TEST(OutcomeJudge, NoExchangeAndFsmNotDoneIsTimeout) {

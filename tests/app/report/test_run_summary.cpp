@@ -18,6 +18,7 @@ TEST(RunSummary, JsonHasEveryContractKey) {
   for (const char* key : {"scenario", "mode", "outcome", "success", "handovers", "aborts", "retries",
                           "time_to_grasp", "hand_still_to_grasp", "total_time", "min_human_distance",
                           "human_contacts", "object_dropped", "limit_violations", "qp_failures", "qp_relaxed",
+                          "limit_guard_steps",
                           "grasp_error", "states", "control_step_us", "realtime_factor"}) {
     EXPECT_NE(j.find(std::string("\"") + key + "\":"), std::string::npos) << key;
   }

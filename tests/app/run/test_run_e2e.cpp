@@ -101,7 +101,7 @@ std::vector<std::string> documentedLogColumns() {
                         "finger_width", "gripper_cmd", "speed_scale", "qp_status", "qp_iterations"})
     c.push_back(n);
   for (const char* n : {"load_share", "load_fx", "load_fy", "load_fz", "ff_fx", "ff_fy", "ff_fz", "grip_force",
-                        "qp_slack"})
+                        "qp_slack", "guard_steps"})
     c.push_back(n);
   return c;
 }

@@ -170,9 +170,54 @@ TEST(Controller, InfeasibleQpFallsBackAndCounts) {
   EXPECT_TRUE(ctl.lastStepFellBack());
   EXPECT_EQ(ctl.fallbackCount(), 3);
   EXPECT_LT(ctl.lastQdd()[0], 0.0);  // braking joint 1
-  // torques are clipped to the limits in force
-  const Vector7 lim = 0.01 * panda().tau_max;
+  // the damped stop's torque comes from the model and the limit guard: it
+  // holds the arm against gravity (the QP's own 1 % limit would drop it) and
+  // stays within the guard's torque limits
+  const Vector7 lim = cfg.limit_guard.torque_scale * panda().tau_max;
   EXPECT_TRUE((ctl.lastTau().cwiseAbs().array() <= lim.array() + 1e-12).all());
+  EXPECT_LT((ctl.lastTau() - (ctl.data().M * ctl.lastQdd() + ctl.data().h)).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_GT(std::abs(ctl.lastTau()[1]), 0.05 * panda().tau_max[1]);  // gravity at joint 2, beyond the QP's limit
+}
+
+TEST(Controller, FallbackStopsWithinEveryLimitWhenTheQpStaysInfeasible) {
+  // issue 16: a QP kept infeasible (torque limits below gravity) with a
+  // coasting fallback (damping 0, in range), every joint moving fast toward
+  // its upper limit. The damped stop used to clip the torque to the QP's
+  // limits (the arm fell) and to coast through the position limits; through
+  // the limit guard, every joint stops before its limit, within its velocity
+  // and torque limits. Plant: the model's own dynamics, semi-implicit Euler.
+  ControllerConfig cfg;
+  cfg.limits.torque_scale = 0.01;
+  cfg.fallback.damping = 0.0;
+  Controller ctl(panda(), cfg);
+  const Model& m = panda();
+  Vector7 q = cfg.posture.target, v;
+  v << 1.5, 1.5, 1.5, 1.5, 2.0, 2.0, 2.0;
+  ControlInputs in;
+  in.q = q;
+  in.qd = v;
+  ctl.reset(in);
+  Data plant(m);
+  const double dt = cfg.period;
+  for (int k = 0; k < 4000; ++k) {
+    in.time = k * dt;
+    in.q = q;
+    in.qd = v;
+    const Vector7 tau = ctl.step(in);
+    ASSERT_TRUE(ctl.lastStepFellBack()) << "step " << k;
+    computeAll(m, plant, q, v);
+    const Vector7 qdd = plant.M.llt().solve(tau - plant.h);
+    v += dt * qdd;
+    q += dt * v;
+    for (int i = 0; i < 7; ++i) {
+      ASSERT_LE(q[i], m.q_max[i]) << "joint " << i + 1 << " step " << k;
+      ASSERT_GE(q[i], m.q_min[i]) << "joint " << i + 1 << " step " << k;
+      ASSERT_LE(std::abs(v[i]), m.v_max[i]) << "joint " << i + 1 << " step " << k;
+      ASSERT_LE(std::abs(tau[i]), m.tau_max[i] + 1e-9) << "joint " << i + 1 << " step " << k;
+    }
+  }
+  EXPECT_LT(v.cwiseAbs().maxCoeff(), 1e-2);  // it came to rest
+  EXPECT_GT(ctl.guardCount(), 0);
 }
 
 namespace {
