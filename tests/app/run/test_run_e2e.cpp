@@ -101,8 +101,11 @@ std::vector<std::string> documentedLogColumns() {
                         "finger_width", "gripper_cmd", "speed_scale", "qp_status", "qp_iterations"})
     c.push_back(n);
   for (const char* n : {"load_share", "load_fx", "load_fy", "load_fz", "ff_fx", "ff_fy", "ff_fz", "grip_force",
-                        "qp_slack", "guard_steps"})
+                        "qp_slack", "person_seen"})
     c.push_back(n);
+  for (const char* why : {"malformed", "invalid", "time", "workspace", "jump", "speed", "acceleration"})
+    c.push_back(std::string("rejected_") + why);
+  c.push_back("guard_steps");
   return c;
 }
 
