@@ -22,14 +22,7 @@
 namespace handover::sim {
 namespace {
 
-HumanBodyPoses personAway() {
-  HumanBodyPoses p;
-  p.hand = test::pose(0.9, 0.2, 0.2);
-  p.forearm = test::pose(0.95, 0.2, 0.35);
-  p.upper_arm = test::pose(0.95, 0.2, 0.68);
-  p.torso = test::pose(1.0, 0.0, -0.75, 0, 0, M_PI);
-  return p;
-}
+using test::personAway;
 
 /// Runs `body` with the working folder set to a fresh scratch folder; returns it.
 template <class F>

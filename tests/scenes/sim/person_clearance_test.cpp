@@ -10,14 +10,7 @@
 namespace handover::sim {
 namespace {
 
-HumanBodyPoses personAway() {
-  HumanBodyPoses p;
-  p.hand = test::pose(0.9, 0.2, 0.2);
-  p.forearm = test::pose(0.95, 0.2, 0.35);
-  p.upper_arm = test::pose(0.95, 0.2, 0.68);
-  p.torso = test::pose(1.0, 0.0, -0.75, 0, 0, M_PI);
-  return p;
-}
+using test::personAway;
 
 // steps once so that the geometry the clearance reads is the posed one
 PersonClearance clearanceWith(Simulation& sim, const HumanBodyPoses& p) {

@@ -54,4 +54,13 @@ double equalityResidual(const Simulation& sim) {
   return worst;
 }
 
+HumanBodyPoses personAway() {
+  HumanBodyPoses p;
+  p.hand = pose(0.9, 0.2, 0.2);
+  p.forearm = pose(0.95, 0.2, 0.35);
+  p.upper_arm = pose(0.95, 0.2, 0.68);
+  p.torso = pose(1.0, 0.0, -0.75, 0, 0, M_PI);
+  return p;
+}
+
 }  // namespace handover::sim::test

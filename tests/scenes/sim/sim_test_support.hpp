@@ -16,6 +16,9 @@ void holdStep(Simulation& sim, const Vector7& q_ref, double gripper_width = 0.08
 /// Pose from a position and roll-pitch-yaw (rad).
 Eigen::Isometry3d pose(double x, double y, double z, double roll = 0, double pitch = 0, double yaw = 0);
 
+/// The person standing at the scene's default place, hand well away from the arm.
+HumanBodyPoses personAway();
+
 /// Largest |efc_pos| over the active equality rows, after mj_forward on a copy
 /// of the simulator's data (0 when no equality is active).
 double equalityResidual(const Simulation& sim);
