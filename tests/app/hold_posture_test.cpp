@@ -7,6 +7,7 @@
 
 #include "app/hold_posture.hpp"
 #include "config/input_error.hpp"
+#include "tests/support/temp_path.hpp"
 
 namespace handover::app {
 namespace {
@@ -44,7 +45,7 @@ TEST(HoldPosture, WithoutGravityCompensationTheArmSags) {
     ++changed;
   }
   ASSERT_GT(changed, 7);
-  const std::string path = ::testing::TempDir() + "panda_half_mass.urdf";
+  const std::string path = handover::test::uniqueTempPath("panda_half_mass.urdf");
   {
     std::ofstream out(path);
     out << urdf;

@@ -6,6 +6,7 @@
 #include <functional>
 
 #include "config/bounded_file.hpp"
+#include "tests/support/temp_path.hpp"
 
 namespace handover {
 namespace {
@@ -93,7 +94,7 @@ TEST(YamlReader, OversizeInputRefusedUnreadNamingTheFile) {
     EXPECT_EQ(m.rfind("/dev/zero:", 0), 0u) << m;
     EXPECT_NE(m.find("larger than"), std::string::npos) << m;
   }
-  const std::string big = std::string(::testing::TempDir()) + "big.yaml";
+  const std::string big = handover::test::uniqueTempPath("big.yaml");
   {
     std::ofstream out(big);
     out << "a: \"" << std::string(kMaxYamlBytes, 'x') << "\"\n";

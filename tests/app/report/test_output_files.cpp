@@ -11,6 +11,7 @@
 #include "app/report/output_files.hpp"
 #include "app/report/run_summary.hpp"
 #include "app/report/summary_text.hpp"
+#include "tests/support/temp_path.hpp"
 
 namespace fs = std::filesystem;
 using namespace handover::app;
@@ -29,7 +30,7 @@ TEST(SafeFileName, NamesCannotLeaveTheOutputFolder) {
 TEST(WriteFileChecked, AFailedWriteIsAnErrorNotAnEmptyFile) {
   // a file size limit fails writes past 1000 bytes with EFBIG, as a full disk
   // fails them with ENOSPC (SIGXFSZ ignored so the write returns the error)
-  const std::string path = std::string(::testing::TempDir()) + "limited.json";
+  const std::string path = handover::test::uniqueTempPath("limited.json");
   std::signal(SIGXFSZ, SIG_IGN);
   rlimit old{};
   getrlimit(RLIMIT_FSIZE, &old);
@@ -57,22 +58,22 @@ TEST(WriteFileChecked, AFailedWriteIsAnErrorNotAnEmptyFile) {
 
 TEST(PrepareOutputDir, UnwritableFoldersFailBeforeTheRun) {
   // a folder below a regular file cannot exist
-  const std::string file = std::string(::testing::TempDir()) + "a_file";
+  const std::string file = handover::test::uniqueTempPath("a_file");
   std::ofstream(file) << "x";
   EXPECT_THROW(prepareOutputDir(file + "/out"), OutputError);
   EXPECT_THROW(prepareOutputDir(file), OutputError);
-  const std::string dir = std::string(::testing::TempDir()) + "out_ok/sub";
+  const std::string dir = handover::test::uniqueTempPath("out_ok/sub");
   EXPECT_NO_THROW(prepareOutputDir(dir));
   EXPECT_TRUE(fs::is_directory(dir));
   EXPECT_TRUE(fs::is_empty(dir));  // the probe is removed
 }
 
 TEST(CheckVideoPath, MissingFoldersAreNotCreated) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "no_such_video_dir";
+  const fs::path dir = fs::path(handover::test::uniqueTempPath("no_such_video_dir"));
   fs::remove_all(dir);
   EXPECT_THROW(checkVideoPath((dir / "a.mp4").string()), OutputError);
   EXPECT_FALSE(fs::exists(dir));
-  EXPECT_NO_THROW(checkVideoPath(std::string(::testing::TempDir()) + "a.mp4"));
+  EXPECT_NO_THROW(checkVideoPath(handover::test::uniqueTempPath("a.mp4")));
 }
 
 TEST(RunExitCode, UnsafeFailsUnlessExpected) {

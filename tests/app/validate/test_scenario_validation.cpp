@@ -18,6 +18,7 @@
 #include "control/controller_config.hpp"
 #include "control/controller_config_bounds.hpp"
 #include "fsm/handover/handover_params.hpp"
+#include "tests/support/temp_path.hpp"
 
 namespace fs = std::filesystem;
 using namespace handover;
@@ -41,8 +42,7 @@ std::string derived(const std::string& from, const std::string& to, const std::s
     EXPECT_NE(pos, std::string::npos) << f;
     if (pos != std::string::npos) t.replace(pos, f.size(), r);
   }
-  const fs::path p = fs::path(::testing::TempDir()) /
-                     (std::string("validate_") + ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".yaml");
+  const fs::path p = fs::path(handover::test::uniqueTempPath("validate.yaml"));
   std::ofstream(p) << t;
   return p.string();
 }
@@ -128,7 +128,7 @@ TEST(Validation, ControllerEntriesOfUnknownTypes) {
   const std::string last = "  - {name: pose, type: pose, enabled: false}";
   ASSERT_NE(text.find(last), std::string::npos);
   text.replace(text.find(last), last.size(), last + "\n  - {name: wrist, type: no_such_task}");
-  const fs::path cfg = fs::path(::testing::TempDir()) / "validate_unknown_task.yaml";
+  const fs::path cfg = fs::path(handover::test::uniqueTempPath("validate_unknown_task.yaml"));
   std::ofstream(cfg) << text;
   const std::string sc = derived("seed: 1", "seed: 1\nconfig: " + cfg.string());
   expectError(sc, "config", "config:", "no_such_task");

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "control/controller_config.hpp"
+#include "tests/support/temp_path.hpp"
 
 using namespace handover;
 using namespace handover::control;
@@ -14,7 +15,7 @@ using namespace handover::control;
 namespace {
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = std::string(::testing::TempDir()) + name;
+  const std::string path = handover::test::uniqueTempPath(name);
   std::ofstream(path) << text;
   return path;
 }

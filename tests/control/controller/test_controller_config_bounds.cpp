@@ -10,6 +10,7 @@
 #include "control/controller_config_bounds.hpp"
 #include "control/model/model.hpp"
 #include "control/model/joint_limits.hpp"
+#include "tests/support/temp_path.hpp"
 
 using namespace handover;
 using namespace handover::control;
@@ -36,7 +37,7 @@ double residual(double k, double d, double dt, bool exact, int steps) {
 }
 
 std::string loadError(const std::string& text) {
-  const std::string path = std::string(::testing::TempDir()) + "bounds.yaml";
+  const std::string path = handover::test::uniqueTempPath("bounds.yaml");
   std::ofstream(path) << text;
   try {
     loadControllerConfig(path);

@@ -9,6 +9,7 @@
 #include "control/model/algorithms.hpp"
 #include "control/model/model.hpp"
 #include "mujoco_oracle.hpp"
+#include "tests/support/temp_path.hpp"
 
 namespace handover::control {
 namespace {
@@ -21,7 +22,7 @@ std::string readPanda() {
 }
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "/" + name;
+  const std::string path = handover::test::uniqueTempPath(name);
   std::ofstream(path) << text;
   return path;
 }
@@ -88,7 +89,7 @@ TEST(ModelLoader, FingerOpeningMovesTheFingerFrames) {
 }
 
 TEST(ModelLoader, MissingFileNamesTheFile) {
-  expectInputError(::testing::TempDir() + "/no_such_robot.urdf", "cannot open");
+  expectInputError(handover::test::uniqueTempPath("no_such_robot.urdf"), "cannot open");
 }
 
 TEST(ModelLoader, BrokenXmlNamesTheFileAndLine) {

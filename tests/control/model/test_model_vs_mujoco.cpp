@@ -10,6 +10,7 @@
 #include "control/model/algorithms.hpp"
 #include "control/model/model.hpp"
 #include "mujoco_oracle.hpp"
+#include "tests/support/temp_path.hpp"
 
 namespace handover::control {
 namespace {
@@ -221,7 +222,7 @@ TEST_F(ModelVsMujoco, PayloadMatchesAWeldedBodyAndClearRestores) {
                 hand_pos.x(), hand_pos.y(), hand_pos.z(), p.mass, p.inertia_com(0, 0), p.inertia_com(1, 1),
                 p.inertia_com(2, 2), p.inertia_com(0, 1), p.inertia_com(0, 2), p.inertia_com(1, 2));
   xml.insert(end, body);
-  const std::string path = ::testing::TempDir() + "/panda_with_payload.xml";
+  const std::string path = handover::test::uniqueTempPath("panda_with_payload.xml");
   std::ofstream(path) << xml;
   MujocoOracle loaded(path);
 

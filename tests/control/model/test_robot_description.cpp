@@ -11,6 +11,7 @@
 #include "control/model/model.hpp"
 #include "control/model/robot_description.hpp"
 #include "mujoco_oracle.hpp"
+#include "tests/support/temp_path.hpp"
 
 namespace handover::control {
 namespace {
@@ -23,7 +24,7 @@ std::string readText(const std::string& path) {
 }
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "/" + name;
+  const std::string path = handover::test::uniqueTempPath(name);
   std::ofstream(path) << text;
   return path;
 }

@@ -14,6 +14,7 @@
 #include "config/input_error.hpp"
 #include "control/controller_config.hpp"
 #include "control/safety/limit_guard.hpp"
+#include "tests/support/temp_path.hpp"
 
 using namespace handover::control;
 
@@ -200,7 +201,7 @@ TEST(LimitGuard, ReducedTorqueScaleHolds) {
 namespace {
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = std::string(::testing::TempDir()) + "/" + name;
+  const std::string path = handover::test::uniqueTempPath(name);
   std::ofstream(path) << text;
   return path;
 }

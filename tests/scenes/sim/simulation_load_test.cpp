@@ -1,6 +1,7 @@
 // Loading: the default scene has the contract names and a 1 ms step; missing
 // or broken MJCF files are InputErrors that name the file.
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -10,6 +11,7 @@
 #include "config/input_error.hpp"
 #include "scenes/sim/simulation.hpp"
 #include "sim_test_support.hpp"
+#include "tests/support/temp_path.hpp"
 
 namespace handover::sim {
 namespace {
@@ -27,12 +29,16 @@ std::string loadError(const std::string& path) {
   return "";
 }
 
-// scene copies in the temp folder need panda.xml beside them (the include)
-void copyPandaToTempDir() {
+// A folder of this test's own for scene copies, with panda.xml beside them
+// (the scene includes it by a relative path); ends with '/'.
+std::string sceneCopyFolder() {
+  const std::string folder = handover::test::uniqueTempPath("scene/");
+  std::filesystem::create_directories(folder);
   const std::string dir = defaultScenePath().substr(0, defaultScenePath().rfind('/'));
   std::ifstream p(dir + "/panda.xml");
-  std::ofstream out(::testing::TempDir() + "panda.xml");
+  std::ofstream out(folder + "panda.xml");
   out << p.rdbuf();
+  return folder;
 }
 
 TEST(SimulationLoad, DefaultSceneHasContractNamesAndOneMillisecondStep) {
@@ -61,7 +67,7 @@ TEST(SimulationLoad, MissingFileIsAnInputErrorNamingIt) {
 }
 
 TEST(SimulationLoad, BrokenFileIsAnInputErrorNamingItWithMujocosText) {
-  const std::string path = ::testing::TempDir() + "handover_broken_scene.xml";
+  const std::string path = sceneCopyFolder() + "handover_broken_scene.xml";
   {
     std::ofstream out(path);
     out << "<mujoco><worldbody><body name=\"object\"><geom name=\"object_geom\" size=\"0.1\"/>\n<oops</worldbody>";
@@ -71,7 +77,6 @@ TEST(SimulationLoad, BrokenFileIsAnInputErrorNamingItWithMujocosText) {
   EXPECT_NE(msg.find("XML"), std::string::npos) << "MuJoCo's own error text: " << msg;
 
   // the real scene with one bad attribute value: every named element is there
-  copyPandaToTempDir();
   std::ifstream in(defaultScenePath());
   std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string good = "timestep=\"0.001\"";
@@ -96,14 +101,7 @@ TEST(SimulationLoad, ValidXmlWithoutTheContractNamesIsAnInputError) {
   xml.replace(xml.find(weld), weld.size(), "body1=\"human_torso\"");
   // the copy lives in a temp folder, with a copy of panda.xml beside it
   const std::string inc = "<include file=\"panda.xml\"/>";
-  const std::string dir = defaultScenePath().substr(0, defaultScenePath().rfind('/'));
-  const std::string tmp_dir = ::testing::TempDir();
-  {
-    std::ifstream p(dir + "/panda.xml");
-    std::ofstream out(tmp_dir + "panda.xml");
-    out << p.rdbuf();
-  }
-  const std::string path = tmp_dir + "handover_scene_without_grip.xml";
+  const std::string path = sceneCopyFolder() + "handover_scene_without_grip.xml";
   {
     std::ofstream out(path);
     out << xml;
