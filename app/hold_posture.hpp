@@ -1,9 +1,14 @@
-// `handover hold`: the first end-to-end job. A gravity-compensated joint PD
-//   tau = Kp (q_ref - q) - Kd qd + g(q)
-// holds the arm in a posture in the simulator, with g(q) from our own
-// rigid-body model (control::Model from the URDF), never from MuJoCo. It is
-// the smallest loop that proves model and simulator agree; later stages
-// replace it with the QP controller.
+// `handover hold`: the smallest closed loop, and the proof that our model and
+// the simulator agree. It runs the handover's own control cycle
+// (runtime::HandoverCycle::step) with a one-state table, config/fsm_hold.yaml
+// (Hold: the posture task toward its configured target, the ready posture of
+// config/controller.yaml; tracking and pose task off), in the joint-reference
+// execution (app/joint_reference.hpp): the cycle is given the reference
+// posture, so its command is our model's gravity there (M qddot + h with
+// qddot = 0), and the driver side adds the joint PD
+//   tau = tau_cycle + Kp (q_ref - q) - Kd qd.
+// Gravity comes from our rigid-body model (control::Model from the URDF),
+// never from MuJoCo; the TCP drift is measured with our forward kinematics.
 #pragma once
 
 #include <ostream>
@@ -18,9 +23,6 @@ struct HoldOptions {
   double duration = 5.0;  ///< simulated s
   std::string urdf;       ///< robot URDF; empty = the robot description's (config/robot.yaml)
   sim::SimOptions sim;    ///< scene file and world options
-  /// posture to hold, rad: the "ready" pose by default
-  control::Vector7 q_ref = (control::Vector7() << 0.0, -0.7853981633974483, 0.0, -2.356194490192345, 0.0,
-                            1.5707963267948966, 0.7853981633974483).finished();
   /// N m/rad and N m s/rad. The PD runs explicitly once per 1 ms step and the
   /// wrist joints are light, so Kd * dt stays well below their inertia.
   control::Vector7 kp = (control::Vector7() << 600, 600, 600, 600, 250, 150, 50).finished();
@@ -36,10 +38,10 @@ struct HoldSummary {
   long steps = 0;
 };
 
-/// Loads the model (URDF) and the simulator, starts the arm at q_ref at rest
-/// with the fingers open, and runs the PD for `duration`. Throws
-/// handover::InputError (naming the file) for a missing or broken URDF/MJCF
-/// or bad options.
+/// Loads the cycle (model from the URDF, config/*.yaml, config/fsm_hold.yaml)
+/// and the simulator, starts the arm at the held posture at rest with the
+/// fingers open, and runs for `duration`. Throws handover::InputError
+/// (naming the file) for a missing or broken URDF/MJCF or bad options.
 HoldSummary holdPosture(const HoldOptions& options);
 
 /// A few lines for the terminal.

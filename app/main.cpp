@@ -248,10 +248,10 @@ int main(int argc, char** argv) {
   CLI::App* plot_cmd = cli.add_subcommand("plot", "redraw the plots of a run from DIR/log.csv");
   plot_cmd->add_option("dir", plot_dir, "a run's output folder")->required();
 
-  // hold (the foundation's job: gravity-compensated joint PD)
+  // hold (the smallest loop: the handover cycle with config/fsm_hold.yaml, joint PD on the driver side)
   app::HoldOptions hold;
   double max_drift_mm = 1.0;
-  CLI::App* hold_cmd = cli.add_subcommand("hold", "hold the ready posture with a gravity-compensated joint PD");
+  CLI::App* hold_cmd = cli.add_subcommand("hold", "hold the ready posture: the handover cycle (our model's gravity) and a joint PD");
   hold_cmd->add_option("--duration", hold.duration, "simulated seconds")->capture_default_str();
   hold_cmd->add_option("--urdf", hold.urdf, "robot description (default scenes/panda.urdf)");
   hold_cmd->add_option("--scene", hold.sim.scene_path, "MuJoCo scene (default scenes/handover_scene.xml)");

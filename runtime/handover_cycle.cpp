@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "control/model/algorithms.hpp"
 #include "fsm/handover/handover_params.hpp"
@@ -43,21 +44,21 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
       obs_target_(settings.target),
       adapter_(controller_, obs_target_, settings.object_grasp, settings.gripper_open_width),
       contact_(controller_.model(), settings.controller.contact_wrench, settings.controller.period) {
-  // the collision constraint the cycle feeds (stage 6) and queries
+  // the collision constraint the cycle feeds (stage 6) and queries; a
+  // controller config without one (the paper's reach, a negative control)
+  // runs without stage 6, and the state machine reads no person nearby
   for (const auto& c : controller_.constraints()) {
     if (!collision_) collision_ = std::dynamic_pointer_cast<control::CollisionConstraint>(c);
   }
-  if (!collision_) {
-    throw InputError(settings.controller.constraints.empty() || settings.controller.constraints.front().file.empty()
-                         ? std::string("controller config: key 'constraints': the handover cycle needs a constraint of "
-                                       "type collision")
-                         : settings.controller.constraints.front().file +
-                               ": key 'constraints': the handover cycle needs a constraint of type collision");
+  if (collision_) {
+    hand_rule_ = collision_->collisionModel().ruleIndex("person_hand_gripper");
+    adapter_.setCollision(collision_.get(), collision_->collisionModel().ruleIndex("object_gripper"));
   }
-  hand_rule_ = collision_->collisionModel().ruleIndex("person_hand_gripper");
-  adapter_.setCollision(collision_.get(), collision_->collisionModel().ruleIndex("object_gripper"));
   ft_frame_ = controller_.model().frameId("ft_sensor");
-  machine_ = fsm::HandoverFsm::fromFile(settings.fsm_config_path, adapter_, settings.object);
+  machine_ = settings.fsm_config
+                 ? std::make_unique<fsm::HandoverFsm>(YamlReader(*settings.fsm_config, settings.fsm_config_path, ""),
+                                                      adapter_, settings.object)
+                 : fsm::HandoverFsm::fromFile(settings.fsm_config_path, adapter_, settings.object);
   if (!settings.object_grasps.empty()) {
     GraspPlanningSettings ps;
     ps.config = settings.grasp_selection;
@@ -151,7 +152,7 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   env.object_valid = est.object.valid && !est.object.stale && est.object.holder == perception::ObjectHolder::Person;
   env.object = est.object.pose;
   env.object_velocity = object_vel_.velocity();
-  collision_->setEnvironment(env);
+  if (collision_) collision_->setEnvironment(env);
 
   // 6b. the wrist load: the share the robot carries goes into the model, the rest is a known wrench
   control::ContactWrenchInput cw;
@@ -209,16 +210,22 @@ void HandoverCycle::assembleInput(double t, const io::ArmState& arm, const perce
   in.hand.velocity = hand_vel_.velocity();
   in.hand.valid = est.human.valid && !est.human.stale;
   in.hand.age = est.human.valid ? est.human.silence : 1e9;  // a steady latency is not silence
+  in.hand.stamp = est.human.valid ? est.human.stamp : -1.0;
   in.object.pose = est.object.pose;
   in.object.velocity = robot_holds ? controller_.tcpVelocity() : object_vel_.velocity();
   in.object.valid = est.object.valid && !est.object.stale;
   in.object.age = robot_holds ? 0.0 : in.hand.age;
+  in.object.stamp = robot_holds ? t : in.hand.stamp;  // sensed with the hand, or the TCP's now
   in.hand_open = robot_holds;
   // the previous Controller::step's collision distances (perceived person)
-  const control::CollisionModel& cm = collision_->collisionModel();
-  const control::CollisionData& cd = collision_->collisionData();
-  in.hand_distance = clip(personDistance(cm, cd, hand_rule_, false, PersonPart::kHand));
-  in.arm_distance = clip(personDistance(cm, cd, hand_rule_, false, PersonPart::kArm));
+  if (collision_) {
+    const control::CollisionModel& cm = collision_->collisionModel();
+    const control::CollisionData& cd = collision_->collisionData();
+    in.hand_distance = clip(personDistance(cm, cd, hand_rule_, false, PersonPart::kHand));
+    in.arm_distance = clip(personDistance(cm, cd, hand_rule_, false, PersonPart::kArm));
+  } else {
+    in.hand_distance = in.arm_distance = clip(std::numeric_limits<double>::infinity());  // no collision scene
+  }
   in.human_distance = std::min(in.hand_distance, in.arm_distance);
   // the controller's observed object and tracking target, as commanded so far
   in.observed_target = adapter_.observationTarget();

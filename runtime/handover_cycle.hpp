@@ -29,7 +29,8 @@
 //   5. target      the observation target from this cycle's estimate
 //                  (blending between object and hand as selected in stage 4).
 //   6. collision   the collision constraint's person capsules from this
-//                  cycle's estimate.
+//                  cycle's estimate (skipped when the controller config has
+//                  no collision constraint).
 //   6b. contact    the wrist wrench of `arm` (ContactWrenchEstimator, at the
 //                  previous step's sensor rotation and acceleration): the
 //                  load share scales the object's payload in the model, and
@@ -62,6 +63,8 @@
 #include <memory>
 #include <string>
 
+#include <yaml-cpp/yaml.h>
+
 #include "control/collision/collision_config.hpp"
 #include "control/constraints/collision_constraint.hpp"
 #include "control/controller.hpp"
@@ -87,7 +90,15 @@ struct CycleSettings {
   /// (control/controller_registry.hpp); add a type here before constructing the cycle.
   control::ControllerRegistry registry = control::ControllerRegistry::shipped();
   control::CollisionConfig collision;         ///< collision pairs (config/collision.yaml)
-  std::string fsm_config_path;                ///< the state machine (config/fsm.yaml)
+  /// The state table the cycle runs (config/fsm.yaml: the handover; the
+  /// paper's reach and `hold` run their own, config/fsm_reach*.yaml,
+  /// config/fsm_hold.yaml, with the same states' mechanism).
+  std::string fsm_config_path;
+  /// The state table as a parsed document, read instead of the file when set
+  /// (a caller that adjusts a state's key, e.g. the reach's standoff);
+  /// fsm_config_path then names it in messages. Held by pointer, as
+  /// control::ElementEntry::node (a YAML::Node assignment rebinds).
+  std::shared_ptr<const YAML::Node> fsm_config;
   perception::EstimatorSettings estimator;    ///< incl. the object's pose in the person's hand
   perception::ObservationTargetSettings target;
   fsm::ObjectInfo object;                     ///< mass, grasp frame in the object, CoM in the TCP when held
@@ -175,6 +186,11 @@ class HandoverCycle {
   ControllerAdapter& adapter() { return adapter_; }
   /// The grasp planner (null without object grasps).
   const GraspPlanning* planning() const { return planning_.get(); }
+  /// The collision constraint (config/controller.yaml's entry of type
+  /// collision). A controller config without one is allowed (the paper's
+  /// reach, negative controls): stage 6 is skipped and the state machine
+  /// reads the person as far away (2 m). collision() requires hasCollision().
+  bool hasCollision() const { return collision_ != nullptr; }
   const control::CollisionConstraint& collision() const { return *collision_; }
   /// Index of the person-hand/gripper rule the state machine relaxes (-1: none).
   int handGripperRule() const { return hand_rule_; }

@@ -1,5 +1,6 @@
 #include "app/experiment/paper_experiment.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -10,16 +11,16 @@
 #include <stdexcept>
 
 #include "app/experiment/experiment_log.hpp"
+#include "app/joint_reference.hpp"
 #include "app/run/world_setup.hpp"
 #include "config/input_error.hpp"
 #include "control/controller.hpp"
-#include "control/model/robot_description.hpp"
 #include "fsm/handover/handover_fsm.hpp"
 #include "fsm/handover/handover_params.hpp"
-#include "perception/perception_config.hpp"
-#include "perception/perception_estimator.hpp"
 #include "perception/simulated_pose_sensor.hpp"
 #include "runtime/adapter/tracking_offset_rule.hpp"
+#include "runtime/handover_cycle.hpp"
+#include "scenes/scenario/object_geometry.hpp"
 #include "scenes/human/human_facts.hpp"
 #include "scenes/human/scripted_human.hpp"
 #include "scenes/sim/simulation.hpp"
@@ -74,6 +75,16 @@ control::ControllerConfig controllerConfigFor(const scenario::Scenario& sc) {
                                           : control::loadControllerConfig(control::defaultControllerConfigPath());
 }
 
+/// The reach's state table: config/fsm_reach.yaml (method) or
+/// config/fsm_reach_baseline.yaml, with the standoff asked for.
+YAML::Node reachTable(const std::string& path, double standoff) {
+  YAML::Node doc = YamlReader::loadFile(path).node();
+  YAML::Node reach = doc["machine"]["states"]["Reach"];
+  if (!reach || !reach.IsMap()) throw InputError(path + ": expected a state machine.states.Reach");
+  reach["standoff"] = standoff;
+  return doc;
+}
+
 }  // namespace
 
 ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController which, const ExperimentOptions& opt) {
@@ -82,41 +93,53 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
   const double duration = opt.duration.value_or(sc.duration);
   if (!(duration > 0.0) || !std::isfinite(duration))
     throw InputError("paper experiment: duration must be a positive number of seconds");
-
-  // -- build everything once ------------------------------------------------
-  const control::ControllerConfig cfg = controllerConfigFor(sc);
-  control::Controller controller(control::loadModel(control::defaultRobotDescription(), control::Model{}.finger_opening), cfg);
-  // the reach meets the pre-grasp frame (method: through the observed object)
-  const control::GraspOffset target_offset = preGraspOffset(sc.object, opt.standoff);
-  controller.setGraspOffset(target_offset);  // before reset(): it places the observed object at the TCP
   const bool method = which == ReachController::kMethod;
-  control::PdGains k_trans = cfg.tracking.translation.gains, k_rot = cfg.tracking.orientation.gains;
+  // the reach meets the pre-grasp frame (the judge's rule below; the Reach state backs off the same)
+  const control::GraspOffset target_offset = preGraspOffset(sc.object, opt.standoff);
+
+  // -- the handover's control cycle, with the reach's state table -----------
+  runtime::CycleSettings cs = runtime::defaultCycleSettings();
+  cs.controller = controllerConfigFor(sc);
+  // the paper's reach has no collision scene (docs/method.md): its entry is left out
+  auto& constraints = cs.controller.constraints;
+  constraints.erase(std::remove_if(constraints.begin(), constraints.end(),
+                                   [](const control::ElementEntry& e) { return e.type == "collision"; }),
+                    constraints.end());
+  // the gains: the method's tracking task, and the baseline's set point with the tracking task's own
+  control::PdGains k_trans = cs.controller.tracking.translation.gains, k_rot = cs.controller.tracking.orientation.gains;
   if (opt.gains == GainSet::kHandoverPhase) {
     const auto [kt, ko] = handoverPhaseStiffness();
     k_trans = control::PdGains::critical(kt);
     k_rot = control::PdGains::critical(ko);
   }
   if (method) {
-    controller.trackingTask().setGains(k_trans, k_rot);
+    cs.controller.tracking.translation.gains = k_trans;
+    cs.controller.tracking.orientation.gains = k_rot;
   } else {
-    // the baseline: a set point with the tracking task's own gains
-    controller.poseTask().setGains(k_trans, k_rot);
-    controller.setTaskEnabled("tracking", false);
-    controller.setTaskEnabled("pose", true);
+    cs.controller.pose_task.translation.gains = k_trans;
+    cs.controller.pose_task.orientation.gains = k_rot;
   }
+  cs.fsm_config_path = sourcePath(method ? "config/fsm_reach.yaml" : "config/fsm_reach_baseline.yaml");
+  cs.fsm_config = std::make_shared<const YAML::Node>(reachTable(cs.fsm_config_path, opt.standoff));
+  cs.estimator.hand_T_object = *sc.human.holds_object;
+  cs.object.mass = sc.object.mass;
+  cs.object.grasp_in_object = sc.object.grasp;
+  cs.object.com_in_tcp = sc.object.grasp.inverse().translation();
+  cs.object.shape = scenario::primitiveShapeOf(sc.object);
+  cs.object_grasp = graspOffsetFor(sc.object);
+  runtime::HandoverCycle cycle(cs);
+  const control::Controller& controller = cycle.controller();
+  const auto* pose_task = dynamic_cast<const control::EndEffectorPoseTask*>(&controller.task(controller.taskIndex("pose")));
+  if (!method && pose_task == nullptr) throw InputError(sc.file + ": the baseline needs a task named pose of type pose");
 
   sim::Simulation sim;
   sim.load(simOptionsFor(sc));
   human::ScriptedHuman person(sc);
   perception::SimulatedPoseSensor sensor(sc.sensor, static_cast<std::uint64_t>(sc.seed));
-  const perception::PerceptionConfig pcfg = perception::loadPerceptionConfig(perception::defaultPerceptionConfigPath());
-  perception::EstimatorSettings est_settings = pcfg.estimator;
-  est_settings.hand_T_object = *sc.human.holds_object;
-  perception::PerceptionEstimator estimator(est_settings);
 
   // -- initial state: ready pose, object in the person's hand ---------------
-  const control::Vector7 q0 = sc.robot.start_q.value_or(cfg.posture.target);
-  sim.reset(q0, 0.08);
+  const control::Vector7 q0 = sc.robot.start_q.value_or(cs.controller.posture.target);
+  sim.reset(q0, cs.gripper_open_width);
   {
     const human::HumanFacts facts =
         human::computeHumanFacts(sim.contacts(), sim.object(), sc.object, sc.human.start);
@@ -125,9 +148,11 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
     sim.placeObject(out0.poses.hand * *sc.human.holds_object);
     sim.setObjectWeld(true);
   }
-  control::ControlInputs cin;
-  cin.q = q0;
-  controller.reset(cin);
+  {
+    io::ArmState arm0;
+    arm0.q = q0;
+    cycle.start(arm0, false);
+  }
 
   const double dt = sim.timestep();
   const std::size_t steps = static_cast<std::size_t>(std::ceil(duration / dt)) + 1;
@@ -141,7 +166,7 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
   const int log_every = std::max(1, opt.log_every_ms);
   log.reserve(steps / static_cast<std::size_t>(log_every) + 2);
   const control::Model& model = controller.model();
-  // the target frame of a resting object pose, by the controller's own rule
+  // the judge: the target frame of the TRUE object pose, by the controller's own rule
   // (free axis, approach side, parallel-gripper twin picked by the wrist)
   const double wrist_mid = 0.5 * (model.q_min[6] + model.q_max[6]);
   auto targetFrame = [&](const Eigen::Isometry3d& object_pose, const Eigen::Matrix3d& R_tcp, double q_wrist) {
@@ -151,11 +176,9 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
   };
 
   bool have_measurement = false;
-  double last_stamp = -1.0;
   Eigen::Isometry3d measured = Eigen::Isometry3d::Identity();
-  Eigen::Isometry3d set_point = controller.tcpPose();
   const bool reference_mode = opt.execution == Execution::kJointReference;
-  control::Vector7 q_ref = q0, qd_ref = control::Vector7::Zero();
+  JointReferenceExecution reference(q0, opt.joint_stiffness, opt.joint_damping);
   const auto wall0 = std::chrono::steady_clock::now();
 
   for (std::size_t k = 0; k < steps; ++k) {
@@ -169,61 +192,41 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
     sim.setHumanPoses(hout.poses);
     if (hout.holds_object != sim.objectWelded()) sim.setObjectWeld(hout.holds_object);
 
-    // sensing and perception: the measured object pose (60 Hz, noisy)
+    // the sensor sees the person (60 Hz, noisy); the arm reports its state
     sensor.observe(t, hout.poses);
-    estimator.update(t, sensor);
-    const perception::PerceptionEstimate& est = estimator.estimate(t, perception::ObjectHolder::Person);
-    const bool valid = est.object.valid && !est.object.stale;
-    const sim::ArmState arm = sim.armState();
-    if (valid) {
-      measured = est.object.pose;
-      if (!have_measurement) controller.resetObservedObject(measured);  // start the observer on the data
-      have_measurement = true;
-      // the baseline's set point moves only when a new sample arrives
-      if (est.human.stamp != last_stamp) {
-        last_stamp = est.human.stamp;
-        set_point = targetFrame(measured, controller.tcpPose().linear(), arm.q[6]);
-        if (!method) controller.setPoseTarget(set_point);
-      }
-    }
-    controller.setObservationTarget(measured, valid);
+    const io::ArmState arm = sim.state();
 
-    // the QP, then torques to the simulator
-    cin.time = t;
-    cin.q = reference_mode ? q_ref : arm.q;
-    cin.qd = reference_mode ? qd_ref : arm.qd;
-    control::Vector7 tau = controller.step(cin);
-    if (reference_mode) {
-      // the arm tracks the QP's own integrated joint state
-      tau += opt.joint_stiffness.cwiseProduct(q_ref - arm.q) + opt.joint_damping.cwiseProduct(qd_ref - arm.qd);
-      qd_ref += controller.lastQdd() * dt;  // semi-implicit Euler, as the controller's own integrator
-      q_ref += qd_ref * dt;
-    }
-    sim::ArmCommand cmd;
-    cmd.tau = tau;
-    cmd.gripper_width = 0.08;  // the reaching phase: fingers stay open
-    cmd.gripper_force = 40.0;
-    sim.applyCommand(cmd);
+    // the control cycle: perception, the reach's state machine, QP
+    cycle.plan();
+    const io::ArmCommand& cycle_cmd = cycle.step(t, reference_mode ? reference.seen(arm) : arm, sensor);
+    const io::ArmCommand cmd =
+        reference_mode ? reference.command(cycle_cmd, arm, controller.lastQdd(), dt) : cycle_cmd;
+    sim.apply(cmd);
 
     // what happened this step (ground truth from the simulator)
+    const perception::PerceptionEstimate& est = cycle.estimate();
+    if (est.object.valid && !est.object.stale) {
+      measured = est.object.pose;
+      have_measurement = true;
+    }
     ExperimentSample s;
     s.time = t;
     s.object_true = obj_true.pose;
     s.object_measured = measured;
     s.measured_valid = have_measurement;
     s.observed = controller.observedState().pose;
-    s.reference = method ? controller.graspFrame().pose : set_point;
+    s.reference = method ? controller.graspFrame().pose : pose_task->target();
     s.tcp = sim.tcpPose();
     s.grasp_true = targetFrame(obj_true.pose, s.tcp.linear(), arm.q[6]);
     s.hand_speed = hout.hand_speed;
     ExperimentArmRow row;
     row.q = arm.q;
     row.qd = arm.qd;
-    row.tau = tau;
+    row.tau = cmd.tau;
     for (int j = 0; j < 7; ++j) {
       s.position_violation |= arm.q[j] < model.q_min[j] - 1e-6 || arm.q[j] > model.q_max[j] + 1e-6;
       s.velocity_violation |= std::abs(arm.qd[j]) > model.v_max[j] + 1e-6;
-      s.torque_violation |= !(std::abs(tau[j]) <= model.tau_max[j] + 1e-6);
+      s.torque_violation |= !(std::abs(cmd.tau[j]) <= model.tau_max[j] + 1e-6);
       row.q_margin[j] = std::min(arm.q[j] - model.q_min[j], model.q_max[j] - arm.q[j]);
     }
     s.qp_failed = controller.lastStepFellBack();
@@ -235,6 +238,7 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
     sim.step();
     if (sim.diverged()) throw std::runtime_error(sim.divergenceMessage());
   }
+  cycle.stop();
   run.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   run.metrics = computeExperimentMetrics(run.samples, opt.thresholds);
 

@@ -1,13 +1,17 @@
-// The paper's experiment (section III) in simulation, without the state
-// machine: the scripted person brings the object to a place the controller
+// The paper's experiment (section III) in simulation, without the handover's
+// phases: the scripted person brings the object to a place the controller
 // is not told; the arm reaches for it from the ready pose with one of two
 // controllers, and the run is logged and measured (experiment_metrics.hpp).
+// It runs the handover's own control cycle (runtime::HandoverCycle::step:
+// perception, state machine, QP) with a one-state table of its own:
 //
-//   kMethod:   observation task -> pre-grasp frame (rigid-body relations) ->
+//   kMethod:   config/fsm_reach.yaml, Reach {follow: tracking}: observation
+//              task -> pre-grasp frame (rigid-body relations) ->
 //              trajectory-tracking task, coupled inside one QP (the frame's
 //              acceleration is a function of the QP's alphadot_obs),
 //              tracking on from t = 0.
-//   kBaseline: a set-point end-effector pose task ("pose") toward the latest
+//   kBaseline: config/fsm_reach_baseline.yaml, Reach {follow: set_point}: a
+//              set-point end-effector pose task ("pose") toward the latest
 //              MEASURED pre-grasp pose (measured object pose * offset,
 //              updated when a 60 Hz sample arrives, no feed-forward),
 //              tracking task off, same stiffness/damping as the tracking task.
@@ -19,12 +23,15 @@
 // metric is measured against the TRUE pre-grasp frame (true object pose *
 // the same offset, chosen by the same rule for a symmetric object).
 //
-// Wiring per 1 ms step (as app/run/run_scenario.cpp, sharing its
-// app/run/world_setup.hpp): person -> simulator ->
-// pose sensor -> estimator -> controller -> simulator. Both controllers use
-// the scenario's controller config (or config/controller.yaml) and the
+// Per 1 ms step (as app/run/run_scenario.cpp, sharing its
+// app/run/world_setup.hpp): person -> simulator -> pose sensor ->
+// HandoverCycle::step -> simulator; the loop here only runs the simulator,
+// the scripted person, the sensor and the judge. Both controllers use the
+// scenario's controller config (or config/controller.yaml) without its
+// collision constraint (the paper's reach has no collision scene), and the
 // perception settings of config/perception.yaml. The observation task runs in
-// both (it only feeds the arm in kMethod); its state is logged for both.
+// both (it only feeds the arm in kMethod); its state is logged for both. The
+// joint-reference execution stays on the driver side (app/joint_reference.hpp).
 // Not real-time safe as a whole (it builds everything, then allocates nothing
 // per step except the reserved traces).
 #pragma once

@@ -47,6 +47,17 @@ RobotDescription loadRobotDescription(const std::string& path) {
   for (int i = 0; i < kArmDofs; ++i) acc.at(i).checkRange(d.acceleration_limits[i], 1e-3, 1e4);
   const YamlReader gripper = root.child("gripper");
   d.gripper_links = names(gripper, "links");
+  {
+    const YamlReader fingers = gripper.child("fingers");
+    const std::vector<std::string> f = names(gripper, "fingers");
+    if (f.size() != 2) fingers.fail("expected two finger links, left then right");
+    for (std::size_t i = 0; i < 2; ++i) {
+      bool listed = false;
+      for (const std::string& l : d.gripper_links) listed = listed || l == f[i];
+      if (f[i].empty() || !listed) fingers.at(i).fail("expected one of gripper.links, got '" + f[i] + "'");
+      d.finger_links[i] = f[i];
+    }
+  }
   d.fingertip_capsules = names(gripper, "fingertip_capsules");
   gripper.finish();
   const YamlReader groups = root.child("link_groups");

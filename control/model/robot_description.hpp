@@ -10,6 +10,9 @@
 //                        ("<prefix>link3" -> "link3", two on a link: "_a", "_b")
 //   acceleration_limits  rad/s^2, joints in chain order (a URDF has none)
 //   gripper.links        links whose capsules are the gripper (hand, fingers)
+//   gripper.fingers      the two finger links, left then right (each one of
+//                        gripper.links; the simulator's contact report and
+//                        finger joints: the URDF cannot say which is left)
 //   gripper.fingertip_capsules  gripper capsules that reach around the object
 //   link_groups          named groups of links ("arm", "gripper", "wrist", ...)
 //                        that config/collision.yaml's pair rules name
@@ -19,6 +22,7 @@
 // allocates, throws InputError naming the file, key and line).
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -37,6 +41,7 @@ struct RobotDescription {
   std::string capsule_prefix;
   Vector7 acceleration_limits = Vector7::Zero();  ///< rad/s^2
   std::vector<std::string> gripper_links;
+  std::array<std::string, 2> finger_links;  ///< left, right (each in gripper_links)
   std::vector<std::string> fingertip_capsules;
   std::vector<LinkGroup> link_groups;  ///< in file order
 };

@@ -71,6 +71,12 @@ class ControllerHandle {
   int taskHandle(const std::string& name) const { return ledger_->controller().taskHandle(name); }
   void setTaskEnabled(int task, bool on);
 
+  /// Unscoped, straight to the controller (ControllerInterface): the observed frame.
+  void placeObservedFrame(const Isometry& pose) { ledger_->controller().placeObservedFrame(pose); }
+  bool trackingTargetAt(const Isometry& observed, double wrist_q, Isometry& tcp) const {
+    return ledger_->controller().trackingTargetAt(observed, wrist_q, tcp);
+  }
+
   void setGripper(double width, double force) { ledger_->setGripper(width, force); }
   void setPayload(double mass, const Vector3& com) { ledger_->setPayload(mass, com); }
   void clearPayload() { ledger_->clearPayload(); }

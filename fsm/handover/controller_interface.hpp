@@ -91,6 +91,24 @@ class ControllerInterface {
   /// and self-collision clearance stays. Optional (default: ignored).
   virtual void relaxHandClearance(bool relaxed) { (void)relaxed; }
 
+  // --- the observed frame (unscoped; optional: the defaults do nothing) ---
+  /// Puts the observed frame (the observation task's state) at `pose`
+  /// (world) at rest, and the observation task's target with it until the
+  /// next measurement: the observed frame starts there instead of converging
+  /// to it (e.g. on the first sample of the object).
+  virtual void placeObservedFrame(const Isometry& pose) { (void)pose; }
+  /// The TCP pose (world) the tracking task's offset asks for while the
+  /// observed frame rests at `observed` (world), resolved by the controller's
+  /// own rule (the free-axis turn and the gripper twin nearest the TCP's
+  /// current orientation and the wrist joint at `wrist_q`, rad); e.g. a pose
+  /// task's set-point on a measured object. False when unavailable.
+  virtual bool trackingTargetAt(const Isometry& observed, double wrist_q, Isometry& tcp) const {
+    (void)observed;
+    (void)wrist_q;
+    (void)tcp;
+    return false;
+  }
+
   // --- physical commands (persistent: they outlive the state) -------------
   /// Total finger opening target (m, 0..0.08) and grasp force limit (N).
   virtual void setGripper(double width, double force) = 0;

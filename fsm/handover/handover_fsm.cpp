@@ -9,6 +9,7 @@
 #include "fsm/handover/h2r_states.hpp"
 #include "fsm/handover/object_lost.hpp"
 #include "fsm/handover/r2h_states.hpp"
+#include "fsm/handover/reach_states.hpp"
 #include "fsm/handover/safety.hpp"
 
 namespace handover::fsm {
@@ -32,6 +33,8 @@ void registerHandoverTypes(Registry& r) {
   r.addState<ConfirmGone>("ConfirmGone");
   r.addState<SafetyStop>("SafetyStop");
   r.addState<SlowDown>("SlowDown");
+  r.addState<Reach>("Reach");
+  r.addState<Hold>("Hold");
   r.addCondition<HumanTooClose>("HumanTooClose");
   r.addCondition<ObjectLost>("ObjectLost");
 }
@@ -47,7 +50,10 @@ HandoverFsm::HandoverFsm(const YamlReader& root, ControllerInterface& controller
   if (!(object.mass > 0.0) || !std::isfinite(object.mass)) {
     throw InputError(root.file() + ": object mass must be > 0 kg, got " + std::to_string(object.mass));
   }
-  params_ = loadHandoverParams(root.child("params"));
+  // a state table of its own (config/fsm_reach.yaml, fsm_hold.yaml) may leave
+  // the shared parameters to config/fsm.yaml: one place for them
+  if (root.has("params")) params_ = loadHandoverParams(root.child("params"));
+  else params_ = loadHandoverParams(YamlReader::loadFile(defaultConfigPath()).child("params"));
   registerHandoverTypes(registry_);
   machine_ = std::make_unique<StateMachine>(root.child("machine"), registry_);
   root.finish();

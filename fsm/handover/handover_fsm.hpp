@@ -25,7 +25,7 @@ void registerHandoverTypes(Registry& registry);
 
 class HandoverFsm {
  public:
-  /// `root` has keys `params` and `machine`. The controller must outlive the
+  /// `root` has keys `params` (optional: config/fsm.yaml's when absent) and `machine`. The controller must outlive the
   /// machine. Throws handover::InputError naming file, key and line.
   HandoverFsm(const YamlReader& root, ControllerInterface& controller, const ObjectInfo& object);
   static std::unique_ptr<HandoverFsm> fromFile(const std::string& path, ControllerInterface& controller,

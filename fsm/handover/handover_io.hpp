@@ -15,6 +15,7 @@ struct SensedBody {
   Vector6 velocity = Vector6::Zero();    ///< estimated [linear (m/s); angular (rad/s)]
   bool valid = false;                    ///< a sample has been received and is usable
   double age = 1e9;                      ///< s since the last sample (stale data grows this)
+  double stamp = -1.0;                   ///< s, measurement time of the latest sample (-1: none); a new sample changes it
 };
 
 struct HandoverInput {

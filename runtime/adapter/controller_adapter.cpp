@@ -1,6 +1,7 @@
 #include "runtime/adapter/controller_adapter.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "runtime/adapter/tracking_offset_rule.hpp"
 
@@ -84,6 +85,23 @@ void ControllerAdapter::applyClearances() {
     if (scope[i] == control::RuleScope::kApart) set(i, !hand_relaxed_);
     if (scope[i] == control::RuleScope::kSharing) set(i, hand_relaxed_);
   }
+}
+
+void ControllerAdapter::placeObservedFrame(const fsm::Isometry& pose) {
+  controller_.resetObservedObject(pose);
+  controller_.setObservationTarget(pose, true);  // held there until a measurement moves it
+}
+
+bool ControllerAdapter::trackingTargetAt(const fsm::Isometry& observed, double wrist_q, fsm::Isometry& tcp) const {
+  if (tracking_ < 0 || !observed.matrix().allFinite() || !std::isfinite(wrist_q)) return false;
+  const control::Model& m = controller_.model();
+  const int w = control::kArmDofs - 1;
+  control::ObservedState at_rest;
+  at_rest.pose = observed;
+  tcp = control::graspFrameState(at_rest, control::Vector6::Zero(), controller_.trackingTask().graspOffset(),
+                                 controller_.tcpPose().linear(), wrist_q - 0.5 * (m.q_min[w] + m.q_max[w]))
+            .pose;
+  return true;
 }
 
 void ControllerAdapter::setGripper(double width, double force) {

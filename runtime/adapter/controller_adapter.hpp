@@ -50,6 +50,11 @@ class ControllerAdapter : public fsm::ControllerInterface {
     object_rule_ = object_rule;
     applyClearances();
   }
+  /// Controller::resetObservedObject there, and the observation target with it.
+  void placeObservedFrame(const fsm::Isometry& pose) override;
+  /// control::graspFrameState of the tracking task's offset at rest, at the
+  /// controller's last TCP orientation; `wrist_q` from the middle of its range.
+  bool trackingTargetAt(const fsm::Isometry& observed, double wrist_q, fsm::Isometry& tcp) const override;
   void setGripper(double width, double force) override;
   void setPayload(double mass, const fsm::Vector3& com_in_tcp) override;
   void clearPayload() override;

@@ -33,6 +33,9 @@ struct HumanOptions {
 
 struct SimOptions {
   std::string scene_path;  ///< MJCF template; empty = <source dir>/scenes/handover_scene.xml
+  /// The robot description whose names the scene holds (control/model/
+  /// robot_description.hpp); empty = <source dir>/config/robot.yaml
+  std::string robot_description;
   ObjectOptions object;
   HumanOptions human;
 };

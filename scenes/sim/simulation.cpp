@@ -10,6 +10,9 @@
 #include <mujoco/mujoco.h>
 
 #include "config/input_error.hpp"
+#include "control/controller_config.hpp"
+#include "control/model/model.hpp"
+#include "control/model/robot_description.hpp"
 #include "scenes/sim/mujoco_messages.hpp"
 #include "scenes/sim/scene_builder.hpp"
 
@@ -70,6 +73,23 @@ void Simulation::load(const SimOptions& options_in) {
   if (options.scene_path.empty()) options.scene_path = defaultScenePath();
   const std::string& path = options.scene_path;
 
+  // the arm's names from the robot description (its URDF's chain), the ready
+  // posture from the controller's config: the simulator names no robot itself
+  const control::RobotDescription description = options.robot_description.empty()
+                                                    ? control::defaultRobotDescription()
+                                                    : control::loadRobotDescription(options.robot_description);
+  RobotNames robot;
+  {
+    const control::Model chain = control::loadModel(description, control::Model{}.finger_opening);
+    robot.description = description.file;
+    for (int j = 0; j < 7; ++j) robot.arm_joints[j] = chain.joint_names[j];
+    robot.base = description.base_link;
+    robot.hand = description.hand_link;
+    robot.fingers = description.finger_links;
+  }
+  const Eigen::Matrix<double, 7, 1> ready =
+      control::loadControllerConfig(control::defaultControllerConfigPath()).posture.target;
+
   installMujocoMessageHandlers();  // MuJoCo's warnings stay out of the user's folder
   std::ifstream in(path);
   if (!in) throw InputError("scene file " + path + ": cannot be opened (missing or unreadable)");
@@ -106,17 +126,15 @@ void Simulation::load(const SimOptions& options_in) {
   d_ = mj_makeData(m_);
   options_ = options;
   try {
-    resolveNames(path);
+    resolveNames(path, robot);
   } catch (...) {
     release();
     throw;
   }
-  Eigen::Matrix<double, 7, 1> ready;
-  ready << 0.0, -M_PI / 4, 0.0, -3 * M_PI / 4, 0.0, M_PI / 2, M_PI / 4;
-  reset(ready, 0.08);
+  reset(ready, kMaxFingerTravel * 2);
 }
 
-void Simulation::resolveNames(const std::string& source) {
+void Simulation::resolveNames(const std::string& source, const RobotNames& robot) {
   auto id = [&](int type, const std::string& name, const char* what) {
     const int i = mj_name2id(m_, type, name.c_str());
     if (i < 0) {
@@ -125,24 +143,52 @@ void Simulation::resolveNames(const std::string& source) {
     }
     return i;
   };
+  // a robot name the scene must hold as well (the robot description's)
+  auto robotId = [&](int type, const std::string& name, const char* what) {
+    const int i = mj_name2id(m_, type, name.c_str());
+    if (i < 0) {
+      throw InputError("scene file " + source + ": no " + what + " named '" + name + "' (named by the robot description " +
+                       robot.description + ")");
+    }
+    return i;
+  };
+  // each actuator must drive the joint the description puts in its place
+  auto drives = [&](int actuator, int joint) {
+    if (m_->actuator_trntype[actuator] != mjTRN_JOINT || m_->actuator_trnid[2 * actuator] != joint) {
+      throw InputError("scene file " + source + ": actuator '" + mj_id2name(m_, mjOBJ_ACTUATOR, actuator) +
+                       "' must drive joint '" + mj_id2name(m_, mjOBJ_JOINT, joint) + "'");
+    }
+  };
   for (int j = 0; j < 7; ++j) {
-    const int joint = id(mjOBJ_JOINT, "panda_joint" + std::to_string(j + 1), "joint");
+    const int joint = robotId(mjOBJ_JOINT, robot.arm_joints[j], "joint");
+    if (m_->jnt_type[joint] != mjJNT_HINGE) {
+      throw InputError("scene file " + source + ": joint '" + robot.arm_joints[j] + "' must be a hinge (arm joint " +
+                       std::to_string(j + 1) + ")");
+    }
     arm_qpos_[j] = m_->jnt_qposadr[joint];
     arm_dof_[j] = m_->jnt_dofadr[joint];
     arm_act_[j] = id(mjOBJ_ACTUATOR, "act_joint" + std::to_string(j + 1), "actuator");
+    drives(arm_act_[j], joint);
   }
+  int finger_body[2];
   for (int f = 0; f < 2; ++f) {
-    const int joint = id(mjOBJ_JOINT, "panda_finger_joint" + std::to_string(f + 1), "joint");
+    // the finger link's one slide joint
+    finger_body[f] = robotId(mjOBJ_BODY, robot.fingers[f], "body");
+    const int joint = m_->body_jntadr[finger_body[f]];
+    if (m_->body_jntnum[finger_body[f]] != 1 || m_->jnt_type[joint] != mjJNT_SLIDE) {
+      throw InputError("scene file " + source + ": body '" + robot.fingers[f] + "' must have one slide joint (a finger)");
+    }
     finger_qpos_[f] = m_->jnt_qposadr[joint];
     finger_dof_[f] = m_->jnt_dofadr[joint];
     finger_act_[f] = id(mjOBJ_ACTUATOR, f == 0 ? "act_finger_left" : "act_finger_right", "actuator");
+    drives(finger_act_[f], joint);
     m_->actuator_forcelimited[finger_act_[f]] = 1;  // applyCommand sets the range
   }
   ft_force_adr_ = m_->sensor_adr[id(mjOBJ_SENSOR, "ft_force", "sensor")];
   ft_torque_adr_ = m_->sensor_adr[id(mjOBJ_SENSOR, "ft_torque", "sensor")];
   ft_site_ = id(mjOBJ_SITE, "ft_sensor", "site");
   tcp_site_ = id(mjOBJ_SITE, "tcp", "site");
-  hand_body_ = id(mjOBJ_BODY, "panda_hand", "body");
+  hand_body_ = robotId(mjOBJ_BODY, robot.hand, "body");
 
   object_body_ = id(mjOBJ_BODY, "object", "body");
   const int object_joint = m_->body_jntadr[object_body_];
@@ -178,9 +224,9 @@ void Simulation::resolveNames(const std::string& source) {
   }
 
   // what each geom is, for the contact report
-  const int robot_root = id(mjOBJ_BODY, "panda_link0", "body");
-  const int left = id(mjOBJ_BODY, "panda_leftfinger", "body");
-  const int right = id(mjOBJ_BODY, "panda_rightfinger", "body");
+  const int robot_root = m_->body_rootid[robotId(mjOBJ_BODY, robot.base, "body")];
+  const int left = finger_body[0];
+  const int right = finger_body[1];
   const int person[] = {human_hand_body_, id(mjOBJ_BODY, "human_forearm", "body"),
                         id(mjOBJ_BODY, "human_upper_arm", "body"), id(mjOBJ_BODY, "human_torso", "body")};
   const int table = id(mjOBJ_GEOM, "table", "geom");

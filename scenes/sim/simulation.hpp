@@ -37,7 +37,12 @@ class Simulation : public io::ArmDriver {
 
   /// Builds the scene from options.scene_path (default scenes/handover_scene.xml),
   /// sized from the options (scene_builder.hpp), compiles it and resets to the
-  /// ready posture. Throws handover::InputError naming the file and quoting
+  /// ready posture (config/controller.yaml posture.target). The robot's
+  /// names come from the robot description (options.robot_description,
+  /// default config/robot.yaml): the arm joints are its URDF chain's, in
+  /// chain order; the base, hand and finger bodies its base_link, frames.hand
+  /// and gripper.fingers; the scene must hold them, and its actuators
+  /// act_joint1..7, act_finger_left/right must drive those joints. Throws handover::InputError naming the file and quoting
   /// MuJoCo's error for a missing, unreadable or broken MJCF, or naming the
   /// element/option that is missing or invalid. Not real-time.
   void load(const SimOptions& options = {});
@@ -143,9 +148,16 @@ class Simulation : public io::ArmDriver {
 
  private:
   enum GeomRole : unsigned char { kOther, kRobot, kLeftFinger, kRightFinger, kPerson, kObject, kTable, kFloor };
+  /// The robot's names the scene must hold (from the robot description).
+  struct RobotNames {
+    std::string description;                  ///< the description file (messages)
+    std::array<std::string, 7> arm_joints;    ///< chain order
+    std::string base, hand;                   ///< bodies
+    std::array<std::string, 2> fingers;       ///< left, right bodies
+  };
 
   void release();
-  void resolveNames(const std::string& source);
+  void resolveNames(const std::string& source, const RobotNames& robot);
   void syncWeldReference();
   void setObjectQpos(const Eigen::Isometry3d& pose, const Vector6& velocity);
 
@@ -157,7 +169,7 @@ class Simulation : public io::ArmDriver {
   std::array<int, 7> arm_qpos_{}, arm_dof_{}, arm_act_{};
   std::array<int, 2> finger_qpos_{}, finger_dof_{}, finger_act_{};
   int ft_force_adr_ = -1, ft_torque_adr_ = -1, ft_site_ = -1, tcp_site_ = -1;
-  int hand_body_ = -1;  ///< panda_hand
+  int hand_body_ = -1;  ///< the description's hand link
   int object_body_ = -1, object_qpos_ = -1, object_dof_ = -1;
   int weld_ = -1;
   int mocap_hand_ = -1, mocap_forearm_ = -1, mocap_upper_arm_ = -1, mocap_torso_ = -1;

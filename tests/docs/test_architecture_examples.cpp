@@ -3,6 +3,7 @@
 // what the document says when plugged in the way the document shows.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -16,7 +17,9 @@
 #include "fsm/core/state_machine.hpp"
 #include "fsm/handover/handover_fsm.hpp"
 #include "runtime/handover_cycle.hpp"
+#include "control/model/robot_description.hpp"
 #include "tests/fsm/handover/fake_world.hpp"
+#include "tests/support/temp_path.hpp"
 
 namespace handover {
 namespace {
@@ -155,6 +158,62 @@ transitions:
   EXPECT_EQ(machine.activePath(), "Done");
   EXPECT_DOUBLE_EQ(ctl.speed, 1.0);
   EXPECT_DOUBLE_EQ(ledger.current().speed_scale, 1.0);
+}
+
+std::string replaceAll(std::string s, const std::string& from, const std::string& to) {
+  for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size())) s.replace(at, from.size(), to);
+  return s;
+}
+
+/// The arm after `steps` cycles of the hold table from a posture 0.05 rad off
+/// the held one, on `robot`'s model, driven by the integrating driver.
+io::ArmState holdRun(const control::RobotDescription& robot, int steps) {
+  runtime::CycleSettings settings = runtime::defaultCycleSettings();
+  settings.robot = robot;
+  settings.fsm_config_path = std::string(HANDOVER_SOURCE_DIR) + "/config/fsm_hold.yaml";
+  runtime::HandoverCycle cycle(settings);
+  io::Vector7 q0 = cycle.controller().config().posture.target;
+  q0.array() += 0.05;
+  examples::IntegratingArmDriver arm(cycle.controller().model(), q0);
+  NobodyInView nobody;
+  cycle.start(arm.state(), false);
+  for (int k = 0; k < steps; ++k) arm.apply(cycle.step(k * 0.001, arm.state(), nobody));
+  return arm.state();
+}
+
+// "Another 7-DoF arm": the Panda's URDF and description with every name
+// changed run the cycle exactly as the Panda's (the simulator's side:
+// tests/scenes/sim/simulation_load_test.cpp).
+TEST(ArchitectureDoc, AnotherArmIsADescriptionChange) {
+  EXPECT_NE(readFile("docs/architecture.md").find("### Another 7-DoF arm"), std::string::npos);
+  const control::RobotDescription panda = control::defaultRobotDescription();
+  const std::string folder = test::uniqueTempPath("arm7/");
+  std::filesystem::create_directories(folder);
+  std::ofstream(folder + "arm7.urdf") << replaceAll(readFile("scenes/panda.urdf"), "panda_", "arm7_");
+  std::string yaml = replaceAll(readFile("config/robot.yaml"), "panda_", "arm7_");
+  yaml = replaceAll(yaml, "urdf: ../scenes/panda.urdf", "urdf: arm7.urdf");
+  std::ofstream(folder + "robot.yaml") << yaml;
+  const control::RobotDescription arm7 = control::loadRobotDescription(folder + "robot.yaml");
+  EXPECT_EQ(arm7.base_link, "arm7_link0");
+  EXPECT_EQ(arm7.finger_links[0], "arm7_leftfinger");
+
+  const io::ArmState a = holdRun(arm7, 300), p = holdRun(panda, 300);
+  EXPECT_GT((p.q - (runtime::defaultCycleSettings().controller.posture.target.array() + 0.05).matrix()).norm(), 1e-3)
+      << "the hold did not move the arm: the comparison says nothing";
+  EXPECT_EQ(a.q, p.q);
+  EXPECT_EQ(a.qd, p.qd);
+  std::filesystem::remove_all(folder);
+}
+
+// The state tables docs/architecture.md names exist and load in the cycle.
+TEST(ArchitectureDoc, TheJobsStateTablesLoad) {
+  const std::string doc = readFile("docs/architecture.md");
+  for (const char* table : {"config/fsm_reach.yaml", "config/fsm_reach_baseline.yaml", "config/fsm_hold.yaml"}) {
+    EXPECT_NE(doc.find(table), std::string::npos) << table;
+    runtime::CycleSettings settings = runtime::defaultCycleSettings();
+    settings.fsm_config_path = std::string(HANDOVER_SOURCE_DIR) + "/" + table;
+    EXPECT_NO_THROW(runtime::HandoverCycle cycle(settings)) << table;
+  }
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
-// Collision avoidance in closed loop with the real controller
-// (control::Controller + CollisionConstraint from config/collision.yaml):
+// Collision avoidance in closed loop with the real controller, run through
+// the handover's own control cycle (runtime::HandoverCycle::step, with a
+// one-state table: Hold {pose, posture}; CollisionConstraint from
+// config/collision.yaml):
 //  1. self-collision: a pose target next to the base and a posture target that
 //     folds joint 4 would fold the arm into itself; with the constraint every
 //     self pair stays above its sDist (kinematic integration of the QP's qddot);
@@ -7,12 +9,14 @@
 //     constraint the robot-table distance stays above sDist and MuJoCo reports
 //     no robot-table contact.
 // Each has a negative control: the same run without the collision constraint
-// does get closer than sDist (so the positive runs mean something).
+// (the controller config's collision entry left out) does get closer than
+// sDist (so the positive runs mean something).
 // Distances are judged twice: from the constraint's own data, and by an
 // independent monitor (same pairs, own Data) that also runs when the
 // constraint is absent.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -30,6 +34,9 @@
 #include "control/controller_config.hpp"
 #include "control/model/algorithms.hpp"
 #include "control/model/model.hpp"
+#include "control/model/robot_description.hpp"
+#include "perception/pose_source.hpp"
+#include "runtime/handover_cycle.hpp"
 #include "scenes/sim/simulation.hpp"
 
 using namespace handover;
@@ -95,8 +102,6 @@ struct Monitor {
   }
 };
 
-const std::string kUrdf = std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf";
-
 Isometry pointingDown(const Vector3& p) {
   Isometry X = Isometry::Identity();
   X.linear() = Eigen::AngleAxisd(M_PI, Vector3::UnitX()).toRotationMatrix();  // tcp z toward -z world
@@ -104,38 +109,61 @@ Isometry pointingDown(const Vector3& p) {
   return X;
 }
 
-/// A controller on the repository's model and config, with the set-point pose
-/// task on instead of tracking (no observation target in these runs), and the
-/// collision constraint from config/collision.yaml when `with_collision`.
-/// These runs drive the controller below the handover cycle on purpose (its
-/// state machine would replace the targets): docs/architecture.md.
-struct Rig {
-  ControllerConfig cfg = loadControllerConfig(defaultControllerConfigPath());
-  CollisionConfig ccfg = loadCollisionConfig(defaultCollisionConfigPath());
-  Controller controller;
-  std::shared_ptr<CollisionConstraint> collision;
+/// No pose samples: these runs have no person.
+class NoSamples : public perception::PoseSource {
+ public:
+  bool poll(double, perception::PoseSample&) override { return false; }
+};
 
-  // the collision constraint is config/controller.yaml's "collision" entry, built
-  // by the registry as in the handover cycle (skipped without a collision scene)
-  explicit Rig(bool with_collision)
-      : controller(loadModel(kUrdf), cfg, ControllerRegistry::shipped(), with_collision ? &ccfg : nullptr) {
-    for (const auto& c : controller.constraints())
-      if (!collision) collision = std::dynamic_pointer_cast<CollisionConstraint>(c);
-    EXPECT_EQ(collision != nullptr, with_collision);
-    if (collision) collision->setEnvironment(CollisionEnvironment{});  // no person
+/// The Hold state's table: the pose task toward `pose`, the posture task toward `posture`.
+YAML::Node holdTable(const Isometry& pose, const Vector7& posture) {
+  const Vector3 ypr = pose.linear().eulerAngles(2, 1, 0);  // R = Rz Ry Rx, as fsm::readPose
+  YAML::Node hold;
+  hold["type"] = "Hold";
+  hold["pose"]["pos"] = std::vector<double>{pose.translation().x(), pose.translation().y(), pose.translation().z()};
+  hold["pose"]["rpy"] = std::vector<double>{ypr[2], ypr[1], ypr[0]};
+  hold["posture"] = std::vector<double>(posture.data(), posture.data() + 7);
+  YAML::Node doc;
+  doc["machine"]["states"]["Hold"] = hold;
+  doc["machine"]["initial"] = "Hold";
+  return doc;
+}
+
+/// The handover cycle on the repository's config, with the Hold table: the
+/// set-point pose task on instead of tracking (no person, no observation
+/// target in these runs), and the collision constraint from
+/// config/collision.yaml only when `with_collision` (docs/architecture.md).
+struct Rig {
+  runtime::CycleSettings cs = runtime::defaultCycleSettings();
+  std::unique_ptr<runtime::HandoverCycle> cycle;
+  NoSamples none;
+
+  Rig(bool with_collision, const Vector7& q0, const Isometry& pose_target, const Vector7& posture_target) {
+    if (!with_collision) {
+      auto& c = cs.controller.constraints;
+      c.erase(std::remove_if(c.begin(), c.end(), [](const ElementEntry& e) { return e.type == "collision"; }), c.end());
+    }
+    cs.fsm_config_path = "test_collision_closed_loop: Hold table";
+    cs.fsm_config = std::make_shared<const YAML::Node>(holdTable(pose_target, posture_target));
+    cycle = std::make_unique<runtime::HandoverCycle>(cs);
+    EXPECT_EQ(cycle->hasCollision(), with_collision);
+    io::ArmState arm0;
+    arm0.q = q0;
+    cycle->start(arm0, false);
   }
-  void start(const Vector7& q0, const Isometry& pose_target, const Vector7& posture_target) {
-    ControlInputs in;
-    in.q = q0;
-    controller.reset(in);
-    EXPECT_TRUE(controller.setTaskEnabled("tracking", false));
-    EXPECT_TRUE(controller.setTaskEnabled("pose", true));
-    controller.setPoseTarget(pose_target);
-    controller.setPostureTarget(posture_target);
+  const Controller& controller() const { return cycle->controller(); }
+  const CollisionConstraint* collision() const { return cycle->hasCollision() ? &cycle->collision() : nullptr; }
+  const Vector7& step(double t, const Vector7& q, const Vector7& qd) {
+    io::ArmState arm;
+    arm.time = t;
+    arm.q = q;
+    arm.qd = qd;
+    return cycle->step(t, arm, none).tau;
   }
 };
 
 Vector7 readyPose() { return loadControllerConfig(defaultControllerConfigPath()).posture.target; }
+double joint4Min() { return loadModel(defaultRobotDescription(), 0.08).q_min[3]; }
 
 // ---------------------------------------------------------------------------
 // 1. Self-collision, kinematic integration of the controller's qddot at 1 ms.
@@ -148,35 +176,29 @@ struct SelfRun {
 };
 
 SelfRun runSelf(bool with_collision, const Isometry& target, double seconds) {
-  Rig rig(with_collision);
   const Vector7 q0 = readyPose();
   // posture: joint 4 folded fully (the pose task, far heavier, decides where the hand goes)
   Vector7 fold = q0;
-  fold[3] = rig.controller.model().q_min[3];
-  rig.start(q0, target, fold);
-  Monitor monitor(rig.controller.model(), rig.ccfg);
+  fold[3] = joint4Min();
+  Rig rig(with_collision, q0, target, fold);
+  Monitor monitor(rig.controller().model(), rig.cs.collision);
 
   SelfRun out;
-  const double dt = rig.cfg.period;
+  const double dt = rig.cs.controller.period;
   Vector7 q = q0, qd = Vector7::Zero();
-  ControlInputs in;
   const int steps = static_cast<int>(std::lround(seconds / dt));
   for (int k = 0; k <= steps; ++k) {
     monitor.observe(q, qd);
     if (k == steps) break;
-    in.time = k * dt;
-    in.q = q;
-    in.qd = qd;
-    rig.controller.step(in);
-    if (rig.collision)
-      Monitor::merge(out.constraint,
-                     clearance(rig.collision->collisionModel(), rig.collision->collisionData(), PairKind::kSelf));
-    qd += dt * rig.controller.lastQdd();  // semi-implicit Euler
+    rig.step(k * dt, q, qd);
+    if (const CollisionConstraint* c = rig.collision())
+      Monitor::merge(out.constraint, clearance(c->collisionModel(), c->collisionData(), PairKind::kSelf));
+    qd += dt * rig.controller().lastQdd();  // semi-implicit Euler
     q += dt * qd;
   }
   out.monitor = monitor.worst_self;
-  out.final_tcp_error = (rig.controller.tcpPose().translation() - target.translation()).norm();
-  out.fallbacks = rig.controller.fallbackCount();
+  out.final_tcp_error = (rig.controller().tcpPose().translation() - target.translation()).norm();
+  out.fallbacks = rig.controller().fallbackCount();
   return out;
 }
 
@@ -227,20 +249,24 @@ TEST(CollisionClosedLoop, SelfCollisionKeptAboveSafetyDistance) {
 // ---------------------------------------------------------------------------
 // 2. The table, in MuJoCo with the controller's torques.
 
-/// Contacts between robot geoms (contype 1, not the base link) and the table's
-/// geoms ("table*"), read from MuJoCo's contact list (sim::ContactReport has
-/// no robot-table count). Read-only use of the diagnostics accessors.
+/// Contacts between robot geoms (contype 1, below the base link of the robot
+/// description) and the table's geoms ("table*"), read from MuJoCo's contact
+/// list (sim::ContactReport has no robot-table count). Read-only use of the
+/// diagnostics accessors.
 int robotTableContacts(const sim::Simulation& sim) {
   const mjModel* m = sim.mujocoModel();
   const mjData* d = sim.mujocoData();
+  static const std::string base_link = defaultRobotDescription().base_link;
+  const int base = mj_name2id(m, mjOBJ_BODY, base_link.c_str());
+  EXPECT_GE(base, 0) << base_link;
   auto isTable = [&](int g) {
     const char* n = mj_id2name(m, mjOBJ_GEOM, g);
     return n && std::strncmp(n, "table", 5) == 0;
   };
   auto isRobot = [&](int g) {
     if (m->geom_contype[g] != 1) return false;
-    const char* body = mj_id2name(m, mjOBJ_BODY, m->geom_bodyid[g]);
-    return body && std::strncmp(body, "panda_", 6) == 0 && std::strcmp(body, "panda_link0") != 0;
+    const int b = m->geom_bodyid[g];
+    return b != base && b != 0 && m->body_rootid[b] == m->body_rootid[base];
   };
   int n = 0;
   for (int i = 0; i < d->ncon; ++i) {
@@ -259,38 +285,31 @@ struct TableRun {
 };
 
 TableRun runTable(bool with_collision, double seconds) {
-  Rig rig(with_collision);
+  const Vector7 q0 = readyPose();
+  // 5 cm below the table top, in front of the robot, pointing down
+  Rig rig(with_collision, q0, pointingDown(Vector3(0.45, 0.0, -0.05)), q0);
   sim::Simulation sim;
   sim.load(sim::SimOptions{});
-  const Vector7 q0 = readyPose();
   sim.reset(q0, 0.08);
-  // 5 cm below the table top, in front of the robot, pointing down
-  rig.start(q0, pointingDown(Vector3(0.45, 0.0, -0.05)), q0);
-  Monitor monitor(rig.controller.model(), rig.ccfg);
+  Monitor monitor(rig.controller().model(), rig.cs.collision);
 
   TableRun out;
-  ControlInputs in;
   const int steps = static_cast<int>(std::lround(seconds / sim.timestep()));
   for (int k = 0; k < steps; ++k) {
-    const sim::ArmState arm = sim.armState();
+    const io::ArmState arm = sim.state();
     monitor.observe(arm.q, arm.qd);
-    in.time = arm.time;
-    in.q = arm.q;
-    in.qd = arm.qd;
-    sim::ArmCommand cmd;
-    cmd.tau = rig.controller.step(in);
-    if (rig.collision)
-      Monitor::merge(out.constraint,
-                     clearance(rig.collision->collisionModel(), rig.collision->collisionData(), PairKind::kTable));
-    sim.applyCommand(cmd);
+    const io::ArmCommand& cmd = rig.cycle->step(arm.time, arm, rig.none);
+    if (const CollisionConstraint* c = rig.collision())
+      Monitor::merge(out.constraint, clearance(c->collisionModel(), c->collisionData(), PairKind::kTable));
+    sim.apply(cmd);
     sim.step();
     // contacts() and tcpPose() describe the state this step started from
     if (robotTableContacts(sim) > 0) ++out.contact_steps;
     out.min_tcp_z = std::min(out.min_tcp_z, sim.tcpPose().translation().z());
   }
-  monitor.observe(sim.armState().q, sim.armState().qd);
+  monitor.observe(sim.state().q, sim.state().qd);
   out.monitor = monitor.worst_table;
-  out.fallbacks = rig.controller.fallbackCount();
+  out.fallbacks = rig.controller().fallbackCount();
   return out;
 }
 

@@ -97,6 +97,7 @@ TEST(RobotDescription, AnotherArmsNamesAreADescriptionChange) {
   for (std::string* s : {&other.base_link, &other.hand_link, &other.tcp_link, &other.ft_sensor_link})
     *s = replaceAll(*s, "panda_", "arm7_");
   for (std::string& s : other.gripper_links) s = replaceAll(s, "panda_", "arm7_");
+  for (std::string& s : other.finger_links) s = replaceAll(s, "panda_", "arm7_");
   for (LinkGroup& g : other.link_groups)
     for (std::string& p : g.patterns) p = replaceAll(p, "panda_", "arm7_");
   other.capsule_prefix = "arm7_";
@@ -151,6 +152,19 @@ TEST(RobotDescription, StrictReading) {
   expectDescriptionError(editedDescription("base_link:", "base:"), "base");
   expectDescriptionError(editedDescription("[15.0, 7.5,", "[15.0, -7.5,"), "acceleration_limits");
   expectDescriptionError(editedDescription("[15.0, 7.5,", "[7.5,"), "acceleration_limits");
+  // the two fingers, left then right, each a gripper link
+  expectDescriptionError(editedDescription("fingers: [panda_leftfinger, panda_rightfinger]", "fingers: [panda_leftfinger]"),
+                         "fingers");
+  expectDescriptionError(
+      editedDescription("fingers: [panda_leftfinger, panda_rightfinger]", "fingers: [panda_leftfinger, panda_link7]"),
+      "panda_link7");
+  expectDescriptionError(editedDescription("  fingers: [panda_leftfinger, panda_rightfinger]", ""), "fingers");
+}
+
+TEST(RobotDescription, FingersAreLeftThenRight) {
+  const RobotDescription d = defaultRobotDescription();
+  EXPECT_EQ(d.finger_links[0], "panda_leftfinger");
+  EXPECT_EQ(d.finger_links[1], "panda_rightfinger");
 }
 
 }  // namespace

@@ -1,16 +1,14 @@
 #include "sim_test_support.hpp"
 
+#include "control/controller_config.hpp"
+
 #include <cmath>
 
 #include <mujoco/mujoco.h>
 
 namespace handover::sim::test {
 
-Vector7 readyPosture() {
-  Vector7 q;
-  q << 0.0, -M_PI / 4, 0.0, -3 * M_PI / 4, 0.0, M_PI / 2, M_PI / 4;
-  return q;
-}
+Vector7 readyPosture() { return control::loadControllerConfig(control::defaultControllerConfigPath()).posture.target; }
 
 void holdStep(Simulation& sim, const Vector7& q_ref, double gripper_width, double gripper_force) {
   const mjModel* m = sim.mujocoModel();
@@ -23,7 +21,8 @@ void holdStep(Simulation& sim, const Vector7& q_ref, double gripper_width, doubl
   kd << 50, 50, 50, 50, 15, 8, 4;
   ArmCommand c;
   for (int j = 0; j < 7; ++j) {
-    const int joint = mj_name2id(m, mjOBJ_JOINT, ("panda_joint" + std::to_string(j + 1)).c_str());
+    // the joint actuator act_joint<j+1> drives (the simulator contract; no robot's joint names here)
+    const int joint = m->actuator_trnid[2 * mj_name2id(m, mjOBJ_ACTUATOR, ("act_joint" + std::to_string(j + 1)).c_str())];
     c.tau[j] = kp[j] * (q_ref[j] - s.q[j]) - kd[j] * s.qd[j] + d->qfrc_bias[m->jnt_dofadr[joint]];
   }
   c.gripper_width = gripper_width;

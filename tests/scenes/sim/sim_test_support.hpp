@@ -8,6 +8,7 @@ namespace handover::sim::test {
 
 using Vector7 = Eigen::Matrix<double, 7, 1>;
 
+/// The ready posture (config/controller.yaml posture.target), where load() leaves the arm.
 Vector7 readyPosture();
 
 /// One step of tau = Kp (q_ref - q) - Kd qd + qfrc_bias, gripper as given.

@@ -3,12 +3,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 #include <mujoco/mujoco.h>
 
 #include "config/input_error.hpp"
+#include "control/model/robot_description.hpp"
 #include "scenes/sim/simulation.hpp"
 #include "sim_test_support.hpp"
 #include "tests/support/temp_path.hpp"
@@ -47,9 +49,11 @@ TEST(SimulationLoad, DefaultSceneHasContractNamesAndOneMillisecondStep) {
   ASSERT_TRUE(sim.loaded());
   EXPECT_DOUBLE_EQ(sim.timestep(), 0.001);
   const mjModel* m = sim.mujocoModel();
-  for (const char* body : {"panda_link0", "panda_hand", "human_hand", "human_forearm", "human_upper_arm",
-                           "human_torso", "object"}) {
-    EXPECT_GE(mj_name2id(m, mjOBJ_BODY, body), 0) << body;
+  const control::RobotDescription robot = control::defaultRobotDescription();
+  for (const std::string& body : {robot.base_link, robot.hand_link, robot.finger_links[0], robot.finger_links[1],
+                                  std::string("human_hand"), std::string("human_forearm"),
+                                  std::string("human_upper_arm"), std::string("human_torso"), std::string("object")}) {
+    EXPECT_GE(mj_name2id(m, mjOBJ_BODY, body.c_str()), 0) << body;
   }
   EXPECT_GE(mj_name2id(m, mjOBJ_CAMERA, "overview"), 0);
   EXPECT_GE(mj_name2id(m, mjOBJ_EQUALITY, "object_weld"), 0);
@@ -119,6 +123,68 @@ TEST(SimulationLoad, ResetRejectsNonFiniteInput) {
   test::Vector7 q = test::readyPosture();
   q[2] = std::nan("");
   EXPECT_THROW(sim.reset(q, 0.08), InputError);
+}
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string replaceAll(std::string s, const std::string& from, const std::string& to) {
+  for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size())) s.replace(at, from.size(), to);
+  return s;
+}
+
+void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+// Another 7-DoF arm is a description change: the Panda's URDF, scene and
+// robot description with every name changed load and run the same; the
+// simulator names no robot joint or link itself (tests/docs/test_module_boundaries).
+TEST(SimulationLoad, AnotherArmsNamesAreADescriptionChange) {
+  const std::string folder = handover::test::uniqueTempPath("arm7/");
+  std::filesystem::create_directories(folder);
+  const control::RobotDescription panda = control::defaultRobotDescription();
+  const std::string scenes = defaultScenePath().substr(0, defaultScenePath().rfind('/') + 1);
+  writeText(folder + "arm7.urdf", replaceAll(readText(panda.urdf), "panda_", "arm7_"));
+  writeText(folder + "panda.xml", replaceAll(readText(scenes + "panda.xml"), "panda_", "arm7_"));
+  writeText(folder + "handover_scene.xml", readText(defaultScenePath()));
+  std::string yaml = replaceAll(readText(panda.file), "panda_", "arm7_");
+  yaml = replaceAll(yaml, "urdf: ../scenes/panda.urdf", "urdf: arm7.urdf");
+  writeText(folder + "robot.yaml", yaml);
+  ASSERT_NE(yaml.find("urdf: arm7.urdf"), std::string::npos);
+
+  SimOptions renamed;
+  renamed.scene_path = folder + "handover_scene.xml";
+  renamed.robot_description = folder + "robot.yaml";
+  Simulation arm7, reference;
+  arm7.load(renamed);
+  reference.load();
+  EXPECT_GE(mj_name2id(arm7.mujocoModel(), mjOBJ_JOINT, "arm7_joint4"), 0);
+  EXPECT_LT(mj_name2id(arm7.mujocoModel(), mjOBJ_JOINT, "panda_joint4"), 0);
+  // the same world: the same steps under the same commands, the same hand mass
+  EXPECT_EQ(arm7.handMass(), reference.handMass());
+  for (int k = 0; k < 200; ++k) {
+    test::holdStep(arm7, test::readyPosture(), 0.02);
+    test::holdStep(reference, test::readyPosture(), 0.02);
+  }
+  EXPECT_EQ(arm7.armState().q, reference.armState().q);
+  EXPECT_EQ(arm7.armState().finger_width, reference.armState().finger_width);
+  EXPECT_TRUE(arm7.tcpPose().isApprox(reference.tcpPose(), 1e-12));
+
+  // the Panda's description does not fit the renamed scene: the message names the joint and the description
+  SimOptions mismatched;
+  mismatched.scene_path = renamed.scene_path;
+  Simulation sim;
+  try {
+    sim.load(mismatched);
+    FAIL() << "the Panda's names loaded a scene without them";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("panda_joint1"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("robot.yaml"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(folder);
 }
 
 }  // namespace
