@@ -1,7 +1,9 @@
 // One control cycle of the handover product (1 ms): the arm's state and the
 // person's pose samples in, one arm command out. Everything that turns
 // sensing into a command lives here, so the simulated run, a real-arm driver
-// loop, the benchmark and the tests all call the same function:
+// loop, the paper experiment, `handover hold`, the benchmark and the tests
+// all call the same function; what differs between them is the state table
+// (settings.fsm_config_path: config/fsm.yaml, fsm_reach*.yaml, fsm_hold.yaml):
 //
 //   HandoverCycle cycle(settings);          // not RT safe: loads, allocates
 //   cycle.start(arm.state(), holds_object); // once, before the first step

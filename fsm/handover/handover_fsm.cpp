@@ -41,7 +41,9 @@ void registerHandoverTypes(Registry& r) {
 
 namespace {
 bool finite(const Isometry& T) { return T.matrix().allFinite(); }
-bool finite(const SensedBody& b) { return finite(b.pose) && b.velocity.allFinite() && std::isfinite(b.age); }
+bool finite(const SensedBody& b) {
+  return finite(b.pose) && b.velocity.allFinite() && std::isfinite(b.age) && std::isfinite(b.stamp);
+}
 }  // namespace
 
 HandoverFsm::HandoverFsm(const YamlReader& root, ControllerInterface& controller, const ObjectInfo& object)
