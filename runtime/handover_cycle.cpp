@@ -44,11 +44,19 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
       obs_target_(settings.target),
       adapter_(controller_, obs_target_, settings.object_grasp, settings.gripper_open_width),
       contact_(controller_.model(), settings.controller.contact_wrench, settings.controller.period) {
-  // the collision constraint the cycle feeds (stage 6) and queries; a
-  // controller config without one (the paper's reach, a negative control)
-  // runs without stage 6, and the state machine reads no person nearby
+  // the collision constraint the cycle feeds (stage 6) and queries; where
+  // allowed (the paper's reach, a negative control), a controller config
+  // without one runs without stage 6, and the state machine reads no person nearby
   for (const auto& c : controller_.constraints()) {
     if (!collision_) collision_ = std::dynamic_pointer_cast<control::CollisionConstraint>(c);
+  }
+  if (!collision_ && settings.collision_required) {
+    // the handover's safety (slow down, stop) reads the robot-person distances
+    throw InputError(settings.controller.constraints.empty() || settings.controller.constraints.front().file.empty()
+                         ? std::string("controller config: key 'constraints': the handover cycle needs a constraint of "
+                                       "type collision")
+                         : settings.controller.constraints.front().file +
+                               ": key 'constraints': the handover cycle needs a constraint of type collision");
   }
   if (collision_) {
     hand_rule_ = collision_->collisionModel().ruleIndex("person_hand_gripper");

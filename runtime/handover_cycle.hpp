@@ -31,8 +31,8 @@
 //   5. target      the observation target from this cycle's estimate
 //                  (blending between object and hand as selected in stage 4).
 //   6. collision   the collision constraint's person capsules from this
-//                  cycle's estimate (skipped when the controller config has
-//                  no collision constraint).
+//                  cycle's estimate (skipped without a collision constraint,
+//                  settings.collision_required false).
 //   6b. contact    the wrist wrench of `arm` (ContactWrenchEstimator, at the
 //                  previous step's sensor rotation and acceleration): the
 //                  load share scales the object's payload in the model, and
@@ -96,6 +96,11 @@ struct CycleSettings {
   /// paper's reach and `hold` run their own, config/fsm_reach*.yaml,
   /// config/fsm_hold.yaml, with the same states' mechanism).
   std::string fsm_config_path;
+  /// The controller config must have a constraint of type collision (the
+  /// handover's safety reads the robot-person distances); false allows a
+  /// config without one (the paper's reach, negative controls): stage 6 is
+  /// then skipped and the state machine reads the person 2 m away.
+  bool collision_required = true;
   /// The state table as a parsed document, read instead of the file when set
   /// (a caller that adjusts a state's key, e.g. the reach's standoff);
   /// fsm_config_path then names it in messages. Held by pointer, as
@@ -189,9 +194,8 @@ class HandoverCycle {
   /// The grasp planner (null without object grasps).
   const GraspPlanning* planning() const { return planning_.get(); }
   /// The collision constraint (config/controller.yaml's entry of type
-  /// collision). A controller config without one is allowed (the paper's
-  /// reach, negative controls): stage 6 is skipped and the state machine
-  /// reads the person as far away (2 m). collision() requires hasCollision().
+  /// collision); absent only with settings.collision_required false.
+  /// collision() requires hasCollision().
   bool hasCollision() const { return collision_ != nullptr; }
   const control::CollisionConstraint& collision() const { return *collision_; }
   /// Index of the person-hand/gripper rule the state machine relaxes (-1: none).

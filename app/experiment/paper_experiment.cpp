@@ -105,6 +105,7 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
   constraints.erase(std::remove_if(constraints.begin(), constraints.end(),
                                    [](const control::ElementEntry& e) { return e.type == "collision"; }),
                     constraints.end());
+  cs.collision_required = false;
   // the gains: the method's tracking task, and the baseline's set point with the tracking task's own
   control::PdGains k_trans = cs.controller.tracking.translation.gains, k_rot = cs.controller.tracking.orientation.gains;
   if (opt.gains == GainSet::kHandoverPhase) {
@@ -129,7 +130,10 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
   cs.object_grasp = graspOffsetFor(sc.object);
   runtime::HandoverCycle cycle(cs);
   const control::Controller& controller = cycle.controller();
-  const auto* pose_task = dynamic_cast<const control::EndEffectorPoseTask*>(&controller.task(controller.taskIndex("pose")));
+  // the baseline's logged reference: its pose task's set point
+  const int pose_index = controller.taskIndex("pose");
+  const auto* pose_task =
+      pose_index < 0 ? nullptr : dynamic_cast<const control::EndEffectorPoseTask*>(&controller.task(pose_index));
   if (!method && pose_task == nullptr) throw InputError(sc.file + ": the baseline needs a task named pose of type pose");
 
   sim::Simulation sim;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "config/input_error.hpp"
 #include "control/tasks/end_effector_pose_task.hpp"
 #include "runtime/handover_cycle.hpp"
 
@@ -57,6 +58,7 @@ CycleSettings reachSettings(const char* table) {
   auto& c = s.controller.constraints;
   c.erase(std::remove_if(c.begin(), c.end(), [](const control::ElementEntry& e) { return e.type == "collision"; }),
           c.end());
+  s.collision_required = false;
   s.fsm_config_path = configFile(table);
   Eigen::Isometry3d grasp = Eigen::Isometry3d::Identity();
   grasp.linear() = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitY()).toRotationMatrix();
@@ -160,6 +162,14 @@ TEST(CycleStateTables, WithoutACollisionConstraintThePersonReadsFarAway) {
   c.erase(std::remove_if(c.begin(), c.end(), [](const control::ElementEntry& e) { return e.type == "collision"; }),
           c.end());
   ASSERT_EQ(c.size() + 1, before);
+  // the handover's safety reads the distances: without the constraint the cycle refuses, unless allowed
+  try {
+    HandoverCycle refused(s);
+    ADD_FAILURE() << "a handover cycle without a collision constraint was built";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("collision"), std::string::npos) << e.what();
+  }
+  s.collision_required = false;
   HandoverCycle cycle(s);
   EXPECT_FALSE(cycle.hasCollision());
   io::ArmState arm;

@@ -142,6 +142,7 @@ struct Rig {
     if (!with_collision) {
       auto& c = cs.controller.constraints;
       c.erase(std::remove_if(c.begin(), c.end(), [](const ElementEntry& e) { return e.type == "collision"; }), c.end());
+      cs.collision_required = false;  // the negative control
     }
     cs.fsm_config_path = "test_collision_closed_loop: Hold table";
     cs.fsm_config = std::make_shared<const YAML::Node>(holdTable(pose_target, posture_target));
