@@ -1,5 +1,7 @@
 #include "fsm/handover/perception_checks.hpp"
 
+#include <cmath>
+
 namespace handover::fsm {
 
 double speedToward(const Vector3& center, const SensedBody& body) {
@@ -31,6 +33,38 @@ bool alignedWithTarget(const HandoverInput& in, double pos_tol, double rot_tol, 
   const double speed = (in.tcp_velocity.head<3>() - in.target_velocity.head<3>()).norm();
   return positionError(in.tcp_pose, in.target_pose) <= pos_tol &&
          rotationError(in.tcp_pose, in.target_pose) <= rot_tol && speed <= speed_tol;
+}
+
+namespace {
+Isometry objectPose(const Isometry& tcp, const ObjectInfo& object) { return tcp * object.grasp_in_object.inverse(); }
+}  // namespace
+
+double heldObjectPositionError(const Isometry& a, const Isometry& b, const ObjectInfo& object) {
+  return positionError(objectPose(a, object), objectPose(b, object));
+}
+
+double heldObjectRotationError(const Isometry& a, const Isometry& b, const ObjectInfo& object) {
+  using Kind = io::ObjectShape::Kind;
+  switch (object.shape.kind) {
+    case Kind::kSphere:
+      return 0.0;
+    case Kind::kCylinder: {
+      const Vector3 axis_a = objectPose(a, object).linear().col(2);
+      const Vector3 axis_b = objectPose(b, object).linear().col(2);
+      return std::atan2(axis_a.cross(axis_b).norm(), std::abs(axis_a.dot(axis_b)));  // exact near 0, unlike acos
+    }
+    case Kind::kBox:
+    case Kind::kUnknown:
+      break;
+  }
+  return rotationError(a, b);
+}
+
+bool presentedAtTarget(const HandoverInput& in, const ObjectInfo& object, double pos_tol, double rot_tol,
+                       double speed_tol) {
+  const double speed = (in.tcp_velocity.head<3>() - in.target_velocity.head<3>()).norm();
+  return heldObjectPositionError(in.tcp_pose, in.target_pose, object) <= pos_tol &&
+         heldObjectRotationError(in.tcp_pose, in.target_pose, object) <= rot_tol && speed <= speed_tol;
 }
 
 }  // namespace handover::fsm

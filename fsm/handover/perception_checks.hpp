@@ -19,4 +19,18 @@ double rotationError(const Isometry& a, const Isometry& b);
 /// all below the given tolerances.
 bool alignedWithTarget(const HandoverInput& in, double pos_tol, double rot_tol, double speed_tol);
 
+/// Errors of the object the gripper holds (ObjectInfo::grasp_in_object, the
+/// TCP being the grasp frame) between the TCP at `a` and at `b`, as a person
+/// taking it sees them: the position of its origin (m), and its orientation
+/// (rad) up to the symmetry of its shape: none for a sphere, the direction of
+/// the axis for a cylinder (either end first), the whole rotation for a box
+/// or an unknown shape.
+double heldObjectPositionError(const Isometry& a, const Isometry& b, const ObjectInfo& object);
+double heldObjectRotationError(const Isometry& a, const Isometry& b, const ObjectInfo& object);
+/// alignedWithTarget for a held object being presented: the same speed test,
+/// the position and orientation tests on the object (heldObject*Error), so a
+/// ball is presented wherever the gripper's roll settles.
+bool presentedAtTarget(const HandoverInput& in, const ObjectInfo& object, double pos_tol, double rot_tol,
+                       double speed_tol);
+
 }  // namespace handover::fsm

@@ -69,7 +69,8 @@ bool Present::onRun(HandoverContext& ctx) {
     setOutput(withdrawn_);
     return true;
   }
-  if (!alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_)) {
+  // the receiver takes the object, not the gripper: its pose up to its symmetry counts
+  if (!presentedAtTarget(ctx.in, ctx.object, pos_tol_, rot_tol_, speed_tol_)) {
     since_ = -1.0;
     return false;
   }

@@ -303,6 +303,9 @@ TEST_F(ScenarioFiles, SensorAndPlacementWithinSpecification) {
   expectError(mutate("noise: {pos: 0.002", "noise: {pos: 1e300"), "sensor.noise.pos", "noise:");
   expectError(mutate("rot_deg: 1.0", "rot_deg: 45"), "sensor.noise.rot_deg", "noise:");
   expectError(mutate("stand: {pos: [1.0, 0.0]", "stand: {pos: [10.0, 0.0]"), "human.stand.pos", "stand:");
+  // a person may stand close (0.45 m: issue 16's case), not on the robot's base
+  EXPECT_NO_THROW(parseScenario(write("close.yaml", mutate("stand: {pos: [1.0, 0.0]", "stand: {pos: [0.45, 0.0]"))));
+  expectError(mutate("stand: {pos: [1.0, 0.0]", "stand: {pos: [0.3, 0.0]"), "human.stand.pos", "stand:");
   expectError(mutate("start: {pos: [0.85, 0.25, 0.10]}", "start: {pos: [0.85, 0.25, 0.10], rpy: [0, 0, 100]}"),
               "human.start.rpy[2]", "start:");
   expectError(mutate("holds_object: false", "holds_object: false\n  start_q: [2.8973, -0.785, 0, -2.356, 0, 1.571, 0.785]"),

@@ -1,0 +1,91 @@
+// The presentation test compares the held object as the receiver sees it:
+// its position, and its orientation up to the symmetry of its shape.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fsm/handover/perception_checks.hpp"
+
+namespace handover::fsm {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+ObjectInfo objectOf(io::ObjectShape::Kind kind, const Isometry& grasp_in_object) {
+  ObjectInfo o;
+  o.shape.kind = kind;
+  o.shape.size = Vector3(0.04, 0.12, 0.0);
+  o.grasp_in_object = grasp_in_object;
+  return o;
+}
+
+// A TCP pose turned by `angle` about `axis` (world) through `pivot`.
+Isometry turned(const Isometry& tcp, const Vector3& pivot, const Vector3& axis, double angle) {
+  const Isometry turn = Eigen::Translation3d(pivot) * Eigen::AngleAxisd(angle, axis.normalized()) *
+                        Eigen::Translation3d(-pivot);
+  return turn * tcp;
+}
+
+HandoverInput presenting(const Isometry& tcp, const Isometry& target) {
+  HandoverInput in;
+  in.tcp_pose = tcp;
+  in.target_pose = target;
+  return in;
+}
+
+const Isometry kTarget = Eigen::Translation3d(0.5, 0.1, 0.4) * Eigen::AngleAxisd(2.0, Vector3(1, 1, 0).normalized());
+
+TEST(PresentedAtTarget, ABallTurnedAboutItsCentreIsPresented) {
+  const ObjectInfo ball = objectOf(io::ObjectShape::Kind::kSphere, Isometry::Identity());
+  const Isometry tcp = turned(kTarget, kTarget.translation(), Vector3(0.3, -1, 0.2), 40 * kDeg);
+  EXPECT_NEAR(rotationError(tcp, kTarget), 40 * kDeg, 1e-9);  // the gripper is 40 deg off
+  EXPECT_TRUE(presentedAtTarget(presenting(tcp, kTarget), ball, 0.01, 15 * kDeg, 0.05));
+  // its centre is what counts: the same turn about a point beside it moves the ball
+  const Isometry off = turned(kTarget, kTarget.translation() + Vector3(0.0, 0.0, 0.1), Vector3(0, 1, 0), 40 * kDeg);
+  EXPECT_GT(heldObjectPositionError(off, kTarget, ball), 0.05);
+  EXPECT_FALSE(presentedAtTarget(presenting(off, kTarget), ball, 0.01, 15 * kDeg, 0.05));
+}
+
+TEST(PresentedAtTarget, ACylinderCountsOnlyItsAxisEitherEndFirst) {
+  // grasped 3 cm along its axis from its centre, the grasp turned about the axis
+  const Isometry grasp = Eigen::Translation3d(0.0, 0.0, 0.03) * Eigen::AngleAxisd(0.7, Vector3::UnitZ()) *
+                         Eigen::AngleAxisd(M_PI / 2, Vector3::UnitY());
+  const ObjectInfo can = objectOf(io::ObjectShape::Kind::kCylinder, grasp);
+  const Isometry object_at_target = kTarget * grasp.inverse();
+  const Vector3 axis = object_at_target.linear().col(2);
+  const Vector3 centre = object_at_target.translation();
+  // spun about its own axis: the same can for the receiver
+  const Isometry spun = turned(kTarget, centre, axis, 50 * kDeg);
+  EXPECT_NEAR(heldObjectRotationError(spun, kTarget, can), 0.0, 1e-9);
+  EXPECT_NEAR(heldObjectPositionError(spun, kTarget, can), 0.0, 1e-9);
+  EXPECT_TRUE(presentedAtTarget(presenting(spun, kTarget), can, 0.01, 15 * kDeg, 0.05));
+  // upside down about its centre: its ends are alike
+  const Vector3 across = axis.unitOrthogonal();
+  EXPECT_NEAR(heldObjectRotationError(turned(kTarget, centre, across, M_PI), kTarget, can), 0.0, 1e-9);
+  // its axis tilted by 30 deg: not presented
+  const Isometry tilted = turned(kTarget, centre, across, 30 * kDeg);
+  EXPECT_NEAR(heldObjectRotationError(tilted, kTarget, can), 30 * kDeg, 1e-9);
+  EXPECT_FALSE(presentedAtTarget(presenting(tilted, kTarget), can, 0.01, 15 * kDeg, 0.05));
+}
+
+TEST(PresentedAtTarget, ABoxAndAnUnknownShapeCountTheWholeRotation) {
+  for (const auto kind : {io::ObjectShape::Kind::kBox, io::ObjectShape::Kind::kUnknown}) {
+    const ObjectInfo box = objectOf(kind, Eigen::Translation3d(0.0, 0.0, 0.02) * Isometry::Identity());
+    const Isometry tcp = turned(kTarget, kTarget.translation(), Vector3::UnitZ(), 20 * kDeg);
+    EXPECT_NEAR(heldObjectRotationError(tcp, kTarget, box), 20 * kDeg, 1e-9);
+    EXPECT_FALSE(presentedAtTarget(presenting(tcp, kTarget), box, 0.05, 15 * kDeg, 0.05));
+    EXPECT_TRUE(presentedAtTarget(presenting(tcp, kTarget), box, 0.05, 25 * kDeg, 0.05));
+  }
+}
+
+TEST(PresentedAtTarget, AMovingGripperIsNotPresentedYet) {
+  const ObjectInfo ball = objectOf(io::ObjectShape::Kind::kSphere, Isometry::Identity());
+  HandoverInput in = presenting(kTarget, kTarget);
+  in.tcp_velocity.head<3>() = Vector3(0.0, 0.1, 0.0);
+  EXPECT_FALSE(presentedAtTarget(in, ball, 0.01, 15 * kDeg, 0.05));
+  in.target_velocity.head<3>() = Vector3(0.0, 0.1, 0.0);  // moving with a moving hand is fine
+  EXPECT_TRUE(presentedAtTarget(in, ball, 0.01, 15 * kDeg, 0.05));
+}
+
+}  // namespace
+}  // namespace handover::fsm
