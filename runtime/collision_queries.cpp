@@ -34,6 +34,15 @@ double personDistance(const control::CollisionModel& cm, const control::Collisio
   return d;
 }
 
+bool personConstraintEngaged(const control::CollisionModel& cm, const control::CollisionData& cd) {
+  for (int i = 0; i < cm.numPairs(); ++i) {
+    const auto& pair = cm.pairs[i];
+    const auto& res = cd.results[i];
+    if (res.active && cm.bodies[pair.other_body].isPerson() && res.distance < pair.damper.i_dist) return true;
+  }
+  return false;
+}
+
 void tableAndSelfDistance(const control::CollisionModel& cm, const control::CollisionData& cd, double& table,
                           double& self) {
   table = self = INFINITY;

@@ -32,6 +32,11 @@ bool isFingertipCapsule(const control::CollisionBody& body);
 double personDistance(const control::CollisionModel& cm, const control::CollisionData& cd, int skip_rule,
                       bool skip_fingertips, PersonPart part = PersonPart::kAll);
 
+/// A collision row with the person is engaged: an active pair with a person
+/// body inside its interaction distance (distance beyond its margin < iDist),
+/// so the velocity damper, not a task, decides how near the arm goes.
+bool personConstraintEngaged(const control::CollisionModel& cm, const control::CollisionData& cd);
+
 /// Smallest distance of the active pairs whose other body is the table
 /// (`table`) or a robot body (`self`); infinity when none.
 void tableAndSelfDistance(const control::CollisionModel& cm, const control::CollisionData& cd, double& table,

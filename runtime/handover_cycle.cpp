@@ -235,6 +235,7 @@ void HandoverCycle::assembleInput(double t, const io::ArmState& arm, const perce
     in.hand_distance = in.arm_distance = clip(std::numeric_limits<double>::infinity());  // no collision scene
   }
   in.human_distance = std::min(in.hand_distance, in.arm_distance);
+  in.person_constraint_engaged = personConstraintEngaged(cm, cd);
   // the controller's observed object and tracking target, as commanded so far
   in.observed_target = adapter_.observationTarget();
   in.observed_pose = controller_.observedState().pose;

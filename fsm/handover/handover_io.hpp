@@ -51,6 +51,10 @@ struct HandoverInput {
   /// alone decides, with the grasp-zone exception.
   double arm_distance = 1e9;
   double hand_distance = 1e9;
+  /// A collision row with the person is engaged (some robot-person pair is
+  /// inside its interaction distance): the constraint, not the tasks, decides
+  /// how near the arm goes. One cycle old, like the distances.
+  bool person_constraint_engaged = false;
 
   // controller feedback
   ObservationTarget observed_target = ObservationTarget::kNone;  ///< what the observation follows now

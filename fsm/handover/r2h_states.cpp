@@ -12,10 +12,12 @@ HoldReady::HoldReady() : ready_(declareOutput("Ready")) {}
 void HoldReady::configure(const YamlReader& def) {
   pos_tol_ = readPositive(def, "position_tolerance", 0.5);
   settle_speed_ = readPositive(def, "settle_speed", 1.0);
+  if (def.has("blocked_time")) blocked_time_ = readRange(def, "blocked_time", 0.0, 10.0);
 }
 
 void HoldReady::onStart(HandoverContext& ctx) {
   const HandoverParams& p = *ctx.params;
+  blocked_since_ = -1.0;
   ctrl().setGripper(p.gripper_close_width, p.gripForce(ctx.object.mass, ctx.comInTcp()));  // keep the grip
   if (!ctx.ledger->payloadSet()) ctrl().setPayload(ctx.object.mass, ctx.comInTcp());
   ctrl().enableTracking(false);
@@ -25,10 +27,22 @@ void HoldReady::onStart(HandoverContext& ctx) {
 
 bool HoldReady::onRun(HandoverContext& ctx) {
   carry_.update(ctx, ctrl());
-  if (carry_.waiting() || positionError(ctx.in.tcp_pose, carry_.goal()) > pos_tol_ ||
-      ctx.in.tcp_velocity.head<3>().norm() > settle_speed_) {
-    return false;
+  const bool settled = ctx.in.tcp_velocity.head<3>().norm() <= settle_speed_;
+  // a receiver already reaching in holds the arm off its carry pose (the
+  // collision constraint stops it beside them; the arm jitters there, as the
+  // person's sensed pose does, so no settling test): the ready pose is only
+  // where to wait for them, and they are here, so waiting there is over
+  const bool blocked = !carry_.waiting() && blocked_time_ >= 0.0 && ctx.in.person_constraint_engaged;
+  if (!blocked) {
+    blocked_since_ = -1.0;
+  } else if (blocked_since_ < 0.0) {
+    blocked_since_ = ctx.time;
   }
+  if (blocked && ctx.time - blocked_since_ >= blocked_time_) {
+    setOutput(ready_);
+    return true;
+  }
+  if (carry_.waiting() || positionError(ctx.in.tcp_pose, carry_.goal()) > pos_tol_ || !settled) return false;
   setOutput(ready_);
   return true;
 }

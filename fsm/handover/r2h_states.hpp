@@ -9,7 +9,10 @@ namespace handover::fsm {
 /// [Ready] Keeps the object gripped (closes, sets the payload) and moves to
 /// params.ready_pose while observing the hand; the object goes upright near
 /// it when a planner is present (held_object_goal.hpp).
-/// Keys: position_tolerance (m), settle_speed (m/s).
+/// Also ready where it stands once a collision row with the person has been
+/// engaged for blocked_time (s) (HandoverInput::person_constraint_engaged):
+/// a receiver already there holds the arm off the ready pose.
+/// Keys: position_tolerance (m), settle_speed (m/s), blocked_time (s; absent: never).
 class HoldReady : public HandoverState {
  public:
   HoldReady();
@@ -21,6 +24,10 @@ class HoldReady : public HandoverState {
  private:
   int ready_;
   double pos_tol_ = 0.03, settle_speed_ = 0.03;
+  /// s an arm held off by the person (HandoverInput::person_constraint_engaged)
+  /// waits before it is ready where it is; negative = never
+  double blocked_time_ = -1.0;
+  double blocked_since_ = -1.0;
   HeldObjectCarry carry_;  ///< the ready pose, or an upright placement of the object near it
 };
 

@@ -120,6 +120,7 @@ struct RecordingController : ControllerInterface {
 
 struct World {
   static constexpr double kDt = 0.001;
+  static constexpr double kPersonIDist = 0.08;  // collision.yaml person pairs: iDist 0.05 + margin 0.03
   static constexpr double kHandMass = 0.73;  // kg, the gripper hanging on the sensor
   double time = 0.0;
   Isometry tcp = Isometry::Identity();
@@ -234,6 +235,7 @@ struct World {
     in.hand_distance = human_distance;
     in.arm_distance = arm_distance;
     in.human_distance = std::min(human_distance, arm_distance);
+    in.person_constraint_engaged = in.human_distance < kPersonIDist;
     in.observed_target = c.observation;
     in.target_pose = desired(c);
     in.target_velocity.head<3>() =

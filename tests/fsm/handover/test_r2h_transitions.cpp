@@ -184,6 +184,29 @@ TEST(HandoverR2H, ARetreatBlockedShortOfItsPoseEndsAfterItsMaxTime) {
   EXPECT_EQ(rig.fsm->stats().retries, 1);
 }
 
+TEST(HandoverR2H, AReceiverAlreadyBesideTheArmEndsTheCarryWhereItStops) {
+  // the arm, carrying the object to the ready pose, is held still short of it
+  // by a receiver who is already there: it is ready where it stands
+  Rig rig(true);
+  rig.world.arm_stuck = true;
+  rig.world.human_distance = 0.05;
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 3.0)) << rig.fsm->activePath();
+  const Leaves leaves = rig.leaves();  // (the person that close also slows the arm down: SlowDown)
+  ASSERT_GE(leaves.size(), 2u);
+  EXPECT_EQ(leaves[leaves.size() - 2], "HoldReady");
+  EXPECT_EQ(rig.fsm->stats().outcome, std::string("running"));
+}
+
+TEST(HandoverR2H, ACarryStuckWithNobodyNearStillTimesOut) {
+  // held off the ready pose with the person far away: not a receiver's doing,
+  // so HoldReady waits for its pose and ends by its timeout
+  Rig rig(true);
+  rig.world.arm_stuck = true;
+  rig.world.human_distance = 0.5;
+  EXPECT_FALSE(rig.runUntilState("WaitForReceiver", 8.0)) << rig.fsm->activePath();
+  EXPECT_EQ(rig.leaves().back(), "HoldReady");
+}
+
 TEST(HandoverR2H, WithdrawWhilePresentingRetreats) {
   Rig rig(true);
   ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0));
