@@ -231,11 +231,12 @@ void HandoverCycle::assembleInput(double t, const io::ArmState& arm, const perce
     const control::CollisionData& cd = collision_->collisionData();
     in.hand_distance = clip(personDistance(cm, cd, hand_rule_, false, PersonPart::kHand));
     in.arm_distance = clip(personDistance(cm, cd, hand_rule_, false, PersonPart::kArm));
+    in.person_constraint_engaged = personConstraintEngaged(cm, cd);
   } else {
     in.hand_distance = in.arm_distance = clip(std::numeric_limits<double>::infinity());  // no collision scene
+    in.person_constraint_engaged = false;
   }
   in.human_distance = std::min(in.hand_distance, in.arm_distance);
-  in.person_constraint_engaged = personConstraintEngaged(cm, cd);
   // the controller's observed object and tracking target, as commanded so far
   in.observed_target = adapter_.observationTarget();
   in.observed_pose = controller_.observedState().pose;
