@@ -147,9 +147,11 @@ TEST(HandoverCycle, TrunkStandsUnderTheTrackedShoulder) {
   blind.start(armAt(q0, 0.0), false);
   for (int k = 0; k < 5; ++k) blind.step(k * 0.001, armAt(q0, k * 0.001), again);
   const auto& bcm = blind.collision().collisionModel();
-  for (int k = 0; k < bcm.numPairs(); ++k)
-    if (bcm.bodies[bcm.pairs[k].other_body].kind == control::CollisionBodyKind::kHumanTrunk)
+  for (int k = 0; k < bcm.numPairs(); ++k) {
+    if (bcm.bodies[bcm.pairs[k].other_body].kind == control::CollisionBodyKind::kHumanTrunk) {
       EXPECT_FALSE(blind.collision().collisionData().results[k].active) << bcm.pairLabel(k);
+    }
+  }
 }
 
 TEST(HandoverCycle, StartSetsTheGripperAndPayload) {
