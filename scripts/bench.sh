@@ -69,6 +69,11 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
   echo "== configuring $build (Release)"
   cmake -S "$repo" -B "$build" -DCMAKE_BUILD_TYPE=Release -DHANDOVER_BUILD_BENCH=ON >/dev/null
 fi
+# the benchmarks are off by default (CMakeLists.txt): switch them on here
+if ! grep -q '^HANDOVER_BUILD_BENCH:BOOL=ON' "$build/CMakeCache.txt"; then
+  echo "== switching the benchmarks on in $build (HANDOVER_BUILD_BENCH=ON)"
+  cmake -S "$repo" -B "$build" -DHANDOVER_BUILD_BENCH=ON >/dev/null
+fi
 build_type="$(sed -n 's/^CMAKE_BUILD_TYPE:[A-Z]*=//p' "$build/CMakeCache.txt")"
 if [ "$build_type" != "Release" ]; then
   echo "bench.sh: warning: $build is a '${build_type:-no type}' build; figures are only comparable from Release" >&2
