@@ -204,12 +204,6 @@ CollisionConfig parse(const YamlReader& root) {
       if (r.has("enabled") && rule.scope != RuleScope::kAlways) w->fail("give `when` or `enabled`, not both");
       if (rule.scope == RuleScope::kSharing) rule.enabled = false;  // nothing is shared at start-up
     }
-    rule.sensing_budget = person && rule.scope != RuleScope::kSharing;
-    if (auto c = r.optionalChild("sensing_budget")) {
-      const bool wanted = c->asBool();
-      if (wanted && !person) c->fail("sensing_budget: true needs a person body in `other`");
-      rule.sensing_budget = wanted;
-    }
     r.finish();
     cfg.pairs.push_back(std::move(rule));
   }

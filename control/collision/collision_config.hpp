@@ -49,11 +49,6 @@ struct PairRule {
   double margin = 0.0;              ///< m, extra clearance around the other body
   bool enabled = true;              ///< state at start-up (a `sharing` rule starts off)
   RuleScope scope = RuleScope::kAlways;  ///< `when:` always | apart | sharing
-  /// The pair adds the sensor's error budget (CollisionConfig::sensing_error)
-  /// to its margin. Default: yes for a person body, except in a `sharing`
-  /// rule; `sensing_budget: false` for a pair where robot and person meet by
-  /// design (the gripper at the object in the person's hand).
-  bool sensing_budget = true;
   int line = 0;                     ///< line in the file, for messages
 };
 

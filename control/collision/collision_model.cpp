@@ -196,9 +196,9 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
         p.other_body = o;
         p.damper = rule.damper;
         // the person is sensed: the pair also budgets the sensor's declared
-        // error, unless its rule says robot and person meet there by design
-        // (PairRule::sensing_budget)
-        const bool budget = ob.isPerson() && rule.sensing_budget;
+        // error, except while the gripper shares the object with the person's
+        // hand (`sharing` rules: there robot and hand meet at the object by design)
+        const bool budget = ob.isPerson() && rule.scope != RuleScope::kSharing;
         p.margin = rule.margin + (budget ? cfg.sensing_error.budget() : 0.0);
         cm.pairs.push_back(p);
       }

@@ -29,15 +29,20 @@ double rotationError(const Isometry& a, const Isometry& b) {
   return Eigen::AngleAxisd(a.linear().transpose() * b.linear()).angle();
 }
 
+namespace {
+// m/s: the TCP's linear speed relative to its moving target
+double speedAgainstTarget(const HandoverInput& in) {
+  return (in.tcp_velocity.head<3>() - in.target_velocity.head<3>()).norm();
+}
+// the held object's pose when the TCP (its grasp frame) is at `tcp`
+Isometry objectPose(const Isometry& tcp, const ObjectInfo& object) { return tcp * object.grasp_in_object.inverse(); }
+}  // namespace
+
 bool alignedWithTarget(const HandoverInput& in, double pos_tol, double rot_tol, double speed_tol) {
-  const double speed = (in.tcp_velocity.head<3>() - in.target_velocity.head<3>()).norm();
+  const double speed = speedAgainstTarget(in);
   return positionError(in.tcp_pose, in.target_pose) <= pos_tol &&
          rotationError(in.tcp_pose, in.target_pose) <= rot_tol && speed <= speed_tol;
 }
-
-namespace {
-Isometry objectPose(const Isometry& tcp, const ObjectInfo& object) { return tcp * object.grasp_in_object.inverse(); }
-}  // namespace
 
 double heldObjectPositionError(const Isometry& a, const Isometry& b, const ObjectInfo& object) {
   return positionError(objectPose(a, object), objectPose(b, object));
@@ -62,7 +67,7 @@ double heldObjectRotationError(const Isometry& a, const Isometry& b, const Objec
 
 bool presentedAtTarget(const HandoverInput& in, const ObjectInfo& object, double pos_tol, double rot_tol,
                        double speed_tol) {
-  const double speed = (in.tcp_velocity.head<3>() - in.target_velocity.head<3>()).norm();
+  const double speed = speedAgainstTarget(in);
   return heldObjectPositionError(in.tcp_pose, in.target_pose, object) <= pos_tol &&
          heldObjectRotationError(in.tcp_pose, in.target_pose, object) <= rot_tol && speed <= speed_tol;
 }

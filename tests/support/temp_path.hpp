@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <fstream>
 #include <string>
 
 namespace handover::test {
@@ -21,6 +22,13 @@ inline std::string uniqueTempPath(const std::string& name) {
   std::string dir = ::testing::TempDir();
   if (dir.empty() || dir.back() != '/') dir += '/';
   return dir + prefix + "." + std::to_string(::getpid()) + "." + name;
+}
+
+/// Writes `text` to uniqueTempPath(name) and returns that path.
+inline std::string writeTempFile(const std::string& name, const std::string& text) {
+  const std::string path = uniqueTempPath(name);
+  std::ofstream(path) << text;
+  return path;
 }
 
 }  // namespace handover::test

@@ -98,8 +98,7 @@ TEST(PersonTrunk, HeadIsASphereOfItsRadius) {
 }
 
 // Every pair with the person carries the declared sensing budget on top of
-// its rule's margin, except `sharing` rules and rules that opt out
-// (sensing_budget: false); pairs with the table do not.
+// its rule's margin, except `sharing` rules; pairs with the table do not.
 TEST(SensingBudget, EntersThePersonPairsMargins) {
   const std::string rules =
       "person: {margin: 0.01}\n"
@@ -108,7 +107,6 @@ TEST(SensingBudget, EntersThePersonPairsMargins) {
       "  - {name: hand, robot: panda_hand, other: human_hand, margin: 0.0}\n"
       "  - {name: arm, robot: panda_link4, other: human_forearm}\n"
       "  - {name: shared, robot: panda_link3, other: human_upper_arm, margin: 0.0, when: sharing}\n"
-      "  - {name: meet, robot: panda_link5, other: human_hand, margin: 0.002, sensing_budget: false}\n"
       "  - {name: table, robot: panda_hand, other: table}\n";
   const CollisionConfig cfg = parseCollisionConfig(rules, "budget.yaml");
   EXPECT_NEAR(cfg.sensing_error.budget(), 0.004 + 2 * 0.002 + 0.1 * 0.2, 1e-12);
@@ -118,7 +116,6 @@ TEST(SensingBudget, EntersThePersonPairsMargins) {
     if (rule == "hand") EXPECT_NEAR(p.margin, 0.028, 1e-12);
     if (rule == "arm") EXPECT_NEAR(p.margin, 0.038, 1e-12);
     if (rule == "shared") EXPECT_NEAR(p.margin, 0.0, 1e-12);
-    if (rule == "meet") EXPECT_NEAR(p.margin, 0.002, 1e-12);  // opted out
     if (rule == "table") EXPECT_NEAR(p.margin, 0.0, 1e-12);
   }
 }
@@ -139,9 +136,4 @@ TEST(SensingBudget, BadValuesNameTheKey) {
   EXPECT_NE(e.find("latnecy"), std::string::npos) << e;
   e = errorOf("sensing_error: {latency: 1.0, person_speed: 0.5}\n" + pairs);
   EXPECT_NE(e.find("exceeds"), std::string::npos) << e;
-  // a budget on a pair without a person is a mistake, named with its key
-  e = errorOf("pairs: [{name: a, robot: panda_hand, other: table, sensing_budget: true}]\n");
-  EXPECT_NE(e.find("sensing_budget"), std::string::npos) << e;
-  e = errorOf("pairs: [{name: a, robot: panda_hand, other: human_hand, sensing_budget: maybe}]\n");
-  EXPECT_NE(e.find("sensing_budget"), std::string::npos) << e;
 }

@@ -14,15 +14,9 @@ using namespace handover::control;
 
 namespace {
 
-std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = handover::test::uniqueTempPath(name);
-  std::ofstream(path) << text;
-  return path;
-}
-
 // Expects loading `text` to fail with a message naming file, key and line.
 void expectError(const std::string& text, const std::string& key, int line) {
-  const std::string path = writeTemp("ctl_bad.yaml", text);
+  const std::string path = handover::test::writeTempFile("ctl_bad.yaml", text);
   try {
     loadControllerConfig(path);
     FAIL() << "no error for:\n" << text;
@@ -53,7 +47,7 @@ TEST(ControllerConfig, ShippedFileLoadsWithPaperDefaults) {
 }
 
 TEST(ControllerConfig, ValuesAndExplicitDampingAreRead) {
-  const std::string path = writeTemp("ctl_ok.yaml",
+  const std::string path = handover::test::writeTempFile("ctl_ok.yaml",
                                      "tracking:\n"
                                      "  weight: 50\n"
                                      "  orientation:\n"
@@ -94,7 +88,7 @@ TEST(ControllerConfig, MissingFileIsAnInputError) {
 }
 
 TEST(ControllerConfig, DisturbanceSectionIsReadAndChecked) {
-  const ControllerConfig c = loadControllerConfig(writeTemp(
+  const ControllerConfig c = loadControllerConfig(handover::test::writeTempFile(
       "ctl_dist.yaml", "disturbance:\n  compensation: off\n  filter_tau: 0.05\n  max_torque_fraction: 0.2\n"));
   EXPECT_EQ(c.disturbance.compensation, DisturbanceSettings::Compensation::kOff);
   EXPECT_DOUBLE_EQ(c.disturbance.filter_tau, 0.05);
@@ -106,7 +100,7 @@ TEST(ControllerConfig, DisturbanceSectionIsReadAndChecked) {
 // tasks: / constraints: lists, read strictly; what a missing list means
 TEST(ControllerConfig, TaskAndConstraintEntries) {
   const ControllerConfig shipped = loadControllerConfig(defaultControllerConfigPath());
-  const ControllerConfig none = loadControllerConfig(writeTemp("ctl_empty.yaml", "period: 0.001\n"));
+  const ControllerConfig none = loadControllerConfig(handover::test::writeTempFile("ctl_empty.yaml", "period: 0.001\n"));
   ASSERT_EQ(shipped.tasks.size(), none.tasks.size());
   for (std::size_t i = 0; i < shipped.tasks.size(); ++i) {
     EXPECT_EQ(shipped.tasks[i].name, none.tasks[i].name);

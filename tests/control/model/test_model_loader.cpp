@@ -21,12 +21,6 @@ std::string readPanda() {
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
-std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = handover::test::uniqueTempPath(name);
-  std::ofstream(path) << text;
-  return path;
-}
-
 // Runs loadModel on `path`; expects InputError whose message holds the path and `detail`.
 void expectInputError(const std::string& path, const std::string& detail) {
   try {
@@ -93,12 +87,12 @@ TEST(ModelLoader, MissingFileNamesTheFile) {
 }
 
 TEST(ModelLoader, BrokenXmlNamesTheFileAndLine) {
-  expectInputError(writeTemp("broken.urdf", "<robot name=\"x\">\n  <link name=\"a\">\n</robot>\n"), "XML error");
+  expectInputError(handover::test::writeTempFile("broken.urdf", "<robot name=\"x\">\n  <link name=\"a\">\n</robot>\n"), "XML error");
 }
 
 TEST(ModelLoader, JointWithoutLimitIsRejected) {
   std::string text = without(readPanda(), "<limit lower=\"-2.8973\" upper=\"2.8973\" velocity=\"2.1750\" effort=\"87\"/>", "/>");
-  expectInputError(writeTemp("no_limit.urdf", text), "panda_joint1");
+  expectInputError(handover::test::writeTempFile("no_limit.urdf", text), "panda_joint1");
 }
 
 TEST(ModelLoader, LimitWithoutEffortIsRejected) {
@@ -106,7 +100,7 @@ TEST(ModelLoader, LimitWithoutEffortIsRejected) {
   const std::size_t j = text.find("<joint name=\"panda_joint6\"");
   const std::size_t e = text.find("effort=\"12\"", j);
   text.erase(e, std::string("effort=\"12\"").size());
-  expectInputError(writeTemp("no_effort.urdf", text), "effort");
+  expectInputError(handover::test::writeTempFile("no_effort.urdf", text), "effort");
 }
 
 TEST(ModelLoader, CutChainNamesWhereItIsCut) {
@@ -115,13 +109,13 @@ TEST(ModelLoader, CutChainNamesWhereItIsCut) {
   ASSERT_NE(j, std::string::npos);
   text.replace(j, std::string("<joint name=\"panda_joint4\" type=\"revolute\">").size(),
                "<joint name=\"panda_joint4\" type=\"fixed\">");
-  expectInputError(writeTemp("cut_fixed.urdf", text), "panda_link3");
+  expectInputError(handover::test::writeTempFile("cut_fixed.urdf", text), "panda_link3");
 }
 
 TEST(ModelLoader, RemovedJointIsReported) {
   // without joint 4 urdfdom sees two roots; the message still names the file
   const std::string text = without(readPanda(), "<joint name=\"panda_joint4\"", "</joint>");
-  expectInputError(writeTemp("cut_removed.urdf", text), "urdf");
+  expectInputError(handover::test::writeTempFile("cut_removed.urdf", text), "urdf");
 }
 
 TEST(ModelLoader, NonCapsuleCollisionIsRejected) {
@@ -129,13 +123,13 @@ TEST(ModelLoader, NonCapsuleCollisionIsRejected) {
   const std::size_t c = text.find("<cylinder radius=\"0.06\" length=\"0.15\"/>");
   ASSERT_NE(c, std::string::npos);
   text.replace(c, std::string("<cylinder radius=\"0.06\" length=\"0.15\"/>").size(), "<box size=\"0.1 0.1 0.1\"/>");
-  expectInputError(writeTemp("box_collision.urdf", text), "panda_link3");
+  expectInputError(handover::test::writeTempFile("box_collision.urdf", text), "panda_link3");
 }
 
 TEST(ModelLoader, MissingTcpLinkIsRejected) {
   std::string text = without(readPanda(), "<joint name=\"panda_tcp_joint\"", "</joint>");
   text = without(text, "<link name=\"panda_tcp\"/>", "/>");
-  expectInputError(writeTemp("no_tcp.urdf", text), "panda_tcp");
+  expectInputError(handover::test::writeTempFile("no_tcp.urdf", text), "panda_tcp");
 }
 
 }  // namespace

@@ -23,12 +23,6 @@ std::string readText(const std::string& path) {
   return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
-std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = handover::test::uniqueTempPath(name);
-  std::ofstream(path) << text;
-  return path;
-}
-
 std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
   for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
     text.replace(at, from.size(), to);
@@ -43,7 +37,7 @@ std::string editedDescription(const std::string& from, const std::string& to) {
 }
 
 void expectDescriptionError(const std::string& text, const std::string& detail) {
-  const std::string path = writeTemp("bad_robot.yaml", text);
+  const std::string path = handover::test::writeTempFile("bad_robot.yaml", text);
   try {
     loadRobotDescription(path);
     FAIL() << "no error for " << detail;
@@ -92,7 +86,7 @@ TEST(RobotDescription, AnotherArmsNamesAreADescriptionChange) {
   const RobotDescription panda = defaultRobotDescription();
   const Model reference = loadModel(panda, 0.08);
 
-  const std::string urdf = writeTemp("renamed_arm.urdf", replaceAll(readText(panda.urdf), "panda_", "arm7_"));
+  const std::string urdf = handover::test::writeTempFile("renamed_arm.urdf", replaceAll(readText(panda.urdf), "panda_", "arm7_"));
   RobotDescription other = panda;
   for (std::string* s : {&other.base_link, &other.hand_link, &other.tcp_link, &other.ft_sensor_link})
     *s = replaceAll(*s, "panda_", "arm7_");

@@ -200,15 +200,9 @@ TEST(LimitGuard, ReducedTorqueScaleHolds) {
 
 namespace {
 
-std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = handover::test::uniqueTempPath(name);
-  std::ofstream(path) << text;
-  return path;
-}
-
 std::string errorOf(const std::string& text) {
   try {
-    loadControllerConfig(writeTemp("guard_cfg.yaml", text));
+    loadControllerConfig(handover::test::writeTempFile("guard_cfg.yaml", text));
   } catch (const handover::InputError& e) {
     return e.what();
   }
@@ -219,7 +213,7 @@ std::string errorOf(const std::string& text) {
 
 TEST(LimitGuardSettings, ReadFromTheControllerConfig) {
   const ControllerConfig c = loadControllerConfig(
-      writeTemp("guard_ok.yaml", "limit_guard:\n  position_margin: 0.01\n  velocity_scale: 0.9\n"
+      handover::test::writeTempFile("guard_ok.yaml", "limit_guard:\n  position_margin: 0.01\n  velocity_scale: 0.9\n"
                                  "  deceleration_scale: 0.4\n  torque_scale: 0.95\n"));
   EXPECT_DOUBLE_EQ(c.limit_guard.position_margin, 0.01);
   EXPECT_DOUBLE_EQ(c.limit_guard.velocity_scale, 0.9);
