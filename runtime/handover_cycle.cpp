@@ -213,6 +213,7 @@ void HandoverCycle::assembleInput(double t, const io::ArmState& arm, const perce
   in.tcp_velocity = controller_.tcpVelocity();
   in.ft_rotation = control::framePlacement(controller_.model(), controller_.data(), ft_frame_).linear();
   in.load_share = contact_.loadShare();
+  in.interaction_force = contact_.interactionForce();
   // this cycle's perception
   in.hand.pose = est.human.hand;
   in.hand.velocity = hand_vel_.velocity();

@@ -36,6 +36,7 @@ void ContactWrenchEstimator::start(const Payload& object, bool holds) {
   calibrating_ = true;
   filtered_ = false;
   load_.setZero();
+  interaction_.setZero();
   share_ = holds ? 1.0 : 0.0;
   payload_ = object_;
   payload_.mass = share_ * object_.mass;
@@ -60,12 +61,18 @@ void ContactWrenchEstimator::update(const ContactWrenchInput& in) {
   w.head<3>() = R * rest.head<3>();
   w.tail<3>() = R * rest.tail<3>();
 
+  // what the whole object alone would put on the sensor, taken out before the filter
+  Vector3 beyond_object = w.head<3>();
+  if (in.gripper_closed && object_.mass > 0.0) beyond_object -= R * hangingWrench(objectInSensor(1.0), R, g_eff).head<3>();
+
   // 3. low-pass
   if (!filtered_) {
     load_ = w;
+    interaction_ = beyond_object;
     filtered_ = true;
   } else {
     load_ += alpha_ * (w - load_);
+    interaction_ += alpha_ * (beyond_object - interaction_);
   }
 
   // 4. load share: the share of the object's weight on the sensor

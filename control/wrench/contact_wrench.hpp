@@ -86,6 +86,14 @@ class ContactWrenchEstimator {
   const Vector6& load() const { return load_; }
   /// 0 (the person carries the object) .. 1 (the robot does).
   double loadShare() const { return share_; }
+  /// Filtered force on the sensor beyond the tool and the whole object as if
+  /// the robot alone carried it (its weight and its inertial force at the
+  /// sensor's acceleration), world axes, N: what a person holding, pushing
+  /// or pulling the object adds. The object's inertia is taken out before
+  /// the filter, so the arm's own accelerations (braking into a
+  /// presentation) do not read as a pull. Meaningful while the fingers are
+  /// closed on the object; with them open it is the load itself.
+  const Vector3& interactionForce() const { return interaction_; }
   /// The object scaled by the load share, for the model (tcp frame).
   const Payload& payload() const { return payload_; }
   /// The known external wrench on the robot at the sensor, world axes: the
@@ -119,6 +127,7 @@ class ContactWrenchEstimator {
   bool calibrating_ = true;   ///< until the gripper leaves its start state
   bool filtered_ = false;
   Vector6 load_ = Vector6::Zero();
+  Vector3 interaction_ = Vector3::Zero();
   double share_ = 0.0;
   Payload payload_;
   Vector6 feed_forward_ = Vector6::Zero();

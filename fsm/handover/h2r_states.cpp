@@ -56,18 +56,34 @@ void Approach::configure(const YamlReader& def) {
 }
 
 void Approach::onStart(HandoverContext& ctx) {
+  blind_ = false;
   trackedChoice(ctx, hand_).adopt(latestPlan(ctx, hand_));
   trackTarget(ctx, ctrl(), hand_, standoff_);
   if (!hand_) ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
 }
 
 bool Approach::onRun(HandoverContext& ctx) {
-  followPlan(ctx, ctrl(), hand_, standoff_);  // the best reachable target as the person moves
-  if (withdrawn(ctx, hand_ ? ctx.in.hand : ctx.in.object)) {
+  const SensedBody& body = hand_ ? ctx.in.hand : ctx.in.object;
+  const bool blind = !fresh(body, ctx.params->max_data_age);
+  if (blind && !blind_) {
+    ctrl().enableTracking(false);
+    ctrl().setPoseTarget(ctx.in.tcp_pose);  // hold: no motion toward a person it cannot see
+  } else if (!blind && blind_) {
+    trackedChoice(ctx, hand_).adopt(latestPlan(ctx, hand_));
+    trackTarget(ctx, ctrl(), hand_, standoff_);
+  }
+  blind_ = blind;
+  if (!blind) {
+    followPlan(ctx, ctrl(), hand_, standoff_);  // the best reachable target as the person moves
+    setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow, body.velocity.head<3>().norm());
+  }
+  if (withdrawn(ctx, body)) {
     setOutput(withdrawn_);
     return true;
   }
-  if (positionError(ctx.in.tcp_pose, ctx.in.target_pose) <= near_distance_ &&
+  // near, and the body arrived: the next phase's stiff gains meet a body at rest, not one still brought in
+  const bool arrived = ctx.params->arrive_speed <= 0.0 || body.velocity.head<3>().norm() <= ctx.params->arrive_speed;
+  if (!blind && arrived && positionError(ctx.in.tcp_pose, ctx.in.target_pose) <= near_distance_ &&
       rotationError(ctx.in.tcp_pose, ctx.in.target_pose) <= near_orientation_) {
     setOutput(near_);
     return true;
@@ -111,6 +127,7 @@ bool Grasp::onRun(HandoverContext& ctx) {
       setOutput(withdrawn_);
       return true;
     }
+    setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kAlign, ctx.in.object.velocity.head<3>().norm());
     const FingerFit f = fitNow(ctx);
     // the funnel's standoff, reached at standoff_speed (the fit is as noisy as the object's pose)
     const double step = standoff_speed_ * std::max(0.0, ctx.time - funnel_time_);

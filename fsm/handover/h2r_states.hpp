@@ -30,6 +30,13 @@ class WaitForPerson : public HandoverState {
 
 /// [Near, Withdrawn] Observation on the object (or hand), tracking the grasp
 /// (or presentation) frame. The object approach opens the gripper.
+/// Blind, it holds: while the tracked body's data is older than
+/// params.max_data_age (a dropout), the TCP holds where it is instead of
+/// heading for a prediction of a person it cannot see; tracking resumes with
+/// the next fresh sample (a person gone for good ends as Withdrawn). Near
+/// also needs the body to have arrived (slower than params.arrive_speed,
+/// when set): the stiff phase after it is for a body at rest. Tracking
+/// gains follow the body's speed (setPhaseGainsForSpeed).
 /// Keys: near_distance (m, TCP to target frame).
 class Approach : public HandoverState {
  public:
@@ -44,6 +51,7 @@ class Approach : public HandoverState {
   double near_distance_ = 0.1;
   double near_orientation_ = M_PI;  ///< rad
   double standoff_ = 0.0;           ///< m, pre-grasp distance along the approach axis
+  bool blind_ = false;              ///< holding: the tracked body's data is stale
 };
 
 /// [Grasped, Missed, Withdrawn] Keeps tracking the grasp frame; closes when

@@ -122,14 +122,16 @@ void HandoverFsm::sanitise(const HandoverInput& in) {
   }
   // wrist force: low-pass in world axes; skip non-finite samples
   const Vector3 f = in.ft_rotation * in.wrench.head<3>();
-  if (f.allFinite()) {
+  if (f.allFinite() && in.interaction_force.allFinite()) {
     const double dt = ctx_.force_valid ? std::max(0.0, ctx_.in.time - last_time_) : 0.0;
     const double tau = params_.ft_filter_tau;
     if (!ctx_.force_valid || tau <= 0.0) {
       ctx_.force = f;
+      ctx_.interaction = in.interaction_force;
       ctx_.force_valid = true;
     } else {
       ctx_.force += (dt / (tau + dt)) * (f - ctx_.force);
+      ctx_.interaction += (dt / (tau + dt)) * (in.interaction_force - ctx_.interaction);
     }
   } else {
     bad = true;

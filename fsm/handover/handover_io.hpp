@@ -37,6 +37,11 @@ struct HandoverInput {
   /// Share of the object's weight the robot carries, 0..1 (control::
   /// ContactWrenchEstimator, one cycle old): 0 while the person holds it.
   double load_share = 0.0;
+  /// Force on the gripper beyond the tool and the held object's own weight
+  /// and inertia, world axes, N (ContactWrenchEstimator::interactionForce,
+  /// one cycle old): what the person adds. A pull reads here, not the arm's
+  /// braking with the object.
+  Vector3 interaction_force = Vector3::Zero();
 
   // perception
   SensedBody hand;          ///< the person's hand (grip point frame, design notes 1)

@@ -34,6 +34,15 @@ struct HandoverParams {
   /// strike it.
   double align_tracking_translation_stiffness = 0.0;
   double align_tracking_orientation_stiffness = 0.0;
+  /// The follow gains once the tracked body has arrived: at rest the
+  /// tracking stiffens to these, and eases back to the follow gains as the
+  /// body's speed rises to arrive_speed (linear between). The soft follow
+  /// gains are for a body still on its way (a stiff arm would meet it hard,
+  /// and would rush at a person it may lose sight of); once the person has
+  /// brought it in, nothing is gained by converging slowly. 0 = off.
+  double arrive_tracking_translation_stiffness = 0.0;
+  double arrive_tracking_orientation_stiffness = 0.0;
+  double arrive_speed = 0.0;  ///< m/s
   // gripper
   double gripper_open_width = 0.08;  ///< m, commanded opening
   double gripper_close_width = 0.0;  ///< m, commanded when grasping (the object stops the fingers)

@@ -64,13 +64,15 @@ void Present::configure(const YamlReader& def) {
 void Present::onStart(HandoverContext& ctx) {
   since_ = pull_since_ = -1.0;
   ctx.force_holding = ctx.force;  // the object's and hand's weight, as carried in
+  ctx.interaction_holding = ctx.interaction;
   trackTarget(ctx, ctrl(), true);
 }
 
 bool Present::onRun(HandoverContext& ctx) {
+  setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow, ctx.in.hand.velocity.head<3>().norm());
   // a person who takes hold and pulls before the robot settled: that is the
   // handover, and the hand moving away is the pull, not a withdrawal
-  if (pull_threshold_ > 0.0 && (ctx.force - ctx.force_holding).norm() > pull_threshold_) {
+  if (pull_threshold_ > 0.0 && (ctx.interaction - ctx.interaction_holding).norm() > pull_threshold_) {
     if (pull_since_ < 0.0) pull_since_ = ctx.time;
     if (ctx.time - pull_since_ >= pull_hold_) {
       setOutput(pulled_);
@@ -105,6 +107,7 @@ void DetectPull::onStart(HandoverContext& ctx) {
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   since_ = -1.0;
   ctx.force_holding = ctx.force;  // removes the object's (and hand's) weight from the test
+  ctx.interaction_holding = ctx.interaction;  // and a hand resting on it
   ctrl().enableTracking(false);
   // hold still so a pull builds force - where the object was to be
   // presented: Present accepts a TCP short of it by up to its tolerance,
@@ -113,7 +116,7 @@ void DetectPull::onStart(HandoverContext& ctx) {
 }
 
 bool DetectPull::onRun(HandoverContext& ctx) {
-  if ((ctx.force - ctx.force_holding).norm() <= threshold_) {
+  if ((ctx.interaction - ctx.interaction_holding).norm() <= threshold_) {
     since_ = -1.0;
     return false;
   }

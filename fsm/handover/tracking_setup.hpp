@@ -2,6 +2,8 @@
 // (or hand) and tracking of the grasp frame (or presentation frame). RT safe.
 #pragma once
 
+#include <algorithm>
+
 #include "fsm/handover/handover_context.hpp"
 
 namespace handover::fsm {
@@ -34,6 +36,27 @@ inline void setTrackingGains(const HandoverParams& p, ControllerHandle& ctrl, Tr
   } else if (p.tracking_translation_stiffness > 0.0 && p.tracking_orientation_stiffness > 0.0) {
     ctrl.setTrackingStiffness(p.tracking_translation_stiffness, p.tracking_orientation_stiffness);
   }
+}
+
+/// The phase gains for a tracked body moving at `speed` (m/s): at rest the
+/// phase's own stiff gains (kFollow: params.arrive_tracking_*, kAlign:
+/// params.align_tracking_*), the follow gains from params.arrive_speed on,
+/// linear between: soft while the person still brings the body in, stiff
+/// once it has arrived. Without arrive gains, the phase gains as they are.
+/// RT safe.
+inline void setPhaseGainsForSpeed(const HandoverParams& p, ControllerHandle& ctrl, TrackingGains phase, double speed) {
+  const bool align = phase == TrackingGains::kAlign && p.align_tracking_translation_stiffness > 0.0 &&
+                     p.align_tracking_orientation_stiffness > 0.0;
+  const double rest_t = align ? p.align_tracking_translation_stiffness : p.arrive_tracking_translation_stiffness;
+  const double rest_o = align ? p.align_tracking_orientation_stiffness : p.arrive_tracking_orientation_stiffness;
+  if (p.arrive_speed <= 0.0 || rest_t <= 0.0 || rest_o <= 0.0 || p.tracking_translation_stiffness <= 0.0 ||
+      p.tracking_orientation_stiffness <= 0.0) {
+    setTrackingGains(p, ctrl, phase);
+    return;
+  }
+  const double moving = std::clamp(speed / p.arrive_speed, 0.0, 1.0);
+  ctrl.setTrackingStiffness(rest_t + moving * (p.tracking_translation_stiffness - rest_t),
+                            rest_o + moving * (p.tracking_orientation_stiffness - rest_o));
 }
 
 /// Backs the tracked target off by `standoff` (m) along its approach axis,

@@ -159,5 +159,41 @@ TEST(ContactWrench, NonFiniteReadingsKeepTheEstimate) {
   EXPECT_TRUE(est.load().allFinite());
 }
 
+
+// A held object braked with the arm pushes on the sensor by its inertia; the
+// interaction force (what a person adds) takes that out, so braking into a
+// presentation does not read as a pull, while a real pull still does.
+TEST(ContactWrench, InteractionForceExcludesTheHeldObjectsInertiaButNotAPull) {
+  Fixture f;
+  ContactWrenchEstimator est(f.model, ContactWrenchSettings{}, kDt);
+  est.start(f.object, true);
+  const Vector3 accel(-6.0, 2.0, 1.0);  // m/s^2 of the sensor, world (hard braking)
+  const Vector3 g_eff = f.model.gravity - accel;
+  Inertia held;
+  held.mass = f.object.mass;
+  held.com = f.object.com;
+  // what the tool and the object put on the sensor at that acceleration
+  const Vector6 braking = hangingWrench(f.model.tool, f.R, g_eff) +
+                          hangingWrench(transformInertia(held, f.sensor_T_tcp), f.R, g_eff);
+  ContactWrenchInput in;
+  in.sensor_rotation = f.R;
+  in.sensor_acceleration = accel;
+  in.gripper_closed = true;
+  in.reading = braking;
+  for (int i = 0; i < 300; ++i) est.update(in);
+  // the load itself carries the 6 N of inertia: a test on it would see a "pull"
+  EXPECT_GT((est.load().head<3>() - held.mass * f.model.gravity).norm(), 5.0);
+  EXPECT_LT(est.interactionForce().norm(), 1e-6);
+  // a person pulling 8 N along +x while the arm brakes
+  const Vector3 pull(8.0, 0.0, 0.0);
+  in.reading.head<3>() += f.R.transpose() * pull;
+  for (int i = 0; i < 300; ++i) est.update(in);
+  EXPECT_NEAR((est.interactionForce() - pull).norm(), 0.0, 1e-3);
+  // open fingers hold nothing: the interaction is the whole load
+  in.gripper_closed = false;
+  for (int i = 0; i < 300; ++i) est.update(in);
+  EXPECT_NEAR((est.interactionForce() - est.load().head<3>()).norm(), 0.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace handover::control

@@ -32,6 +32,7 @@ struct RecordingController : ControllerInterface {
   Vector7 posture = Vector7::Zero();
   double speed = 1.0;
   bool gains_active = false;     // values only (not in `calls`)
+  double gains_translation = 0.0, gains_orientation = 0.0;  // 1/s^2, when gains_active
   bool hand_relaxed = false;     // values only (not in `calls`)
   double gripper_width = 0.08;
   bool payload = false;
@@ -86,7 +87,10 @@ struct RecordingController : ControllerInterface {
     }
   }
   void setTaskGains(int task, const TaskGains& g) override {
-    if (task == 0) gains_active = g.active;
+    if (task != 0) return;
+    gains_active = g.active;
+    gains_translation = g.translation;
+    gains_orientation = g.orientation;
   }
   void setTaskOffset(int task, const TrackingOffset& o) override {
     if (task != 0) return;
@@ -222,6 +226,9 @@ struct World {
     if (robot_grip && person_holds) f += pull;
     in.wrench.head<3>() = f;
     in.load_share = robot_carries ? 1.0 : 0.0;  // what control::ContactWrenchEstimator would report
+    // beyond the tool and the whole object (the estimator's interaction force): the
+    // person's support while they carry it, their pull while both hold it
+    if (robot_grip) in.interaction_force = Vector3(0, 0, robot_carries ? 0.0 : mass * 9.81) + (person_holds ? pull : Vector3::Zero());
     const double age = time - last_sample;
     in.hand.pose = handPose();
     in.hand.velocity.head<3>() = hand_vel;

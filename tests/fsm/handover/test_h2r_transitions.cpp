@@ -103,6 +103,52 @@ TEST(HandoverH2R, StaleDataDuringApproachCountsAsWithdrawal) {
   EXPECT_EQ(rig.fsm->stats().aborts, 1);
 }
 
+// A dropout is not motion: blind, the approach holds where it is (no rush at
+// a prediction of a person it cannot see) and resumes with the next sample.
+TEST(HandoverH2R, ApproachHoldsWhileTheObjectIsUnseen) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  ASSERT_TRUE(rig.ctl.tracking);
+  rig.world.dropout = true;
+  rig.runFor(0.2);  // older than max_data_age, younger than stale_timeout
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Approach")) << rig.fsm->activePath();
+  EXPECT_FALSE(rig.ctl.tracking);
+  EXPECT_TRUE(rig.ctl.pose_active);
+  const Vector3 held = rig.ctl.pose.translation();
+  rig.runFor(0.1);
+  EXPECT_EQ(rig.ctl.pose.translation(), held);  // one hold, not a drifting target
+  rig.world.dropout = false;
+  rig.runFor(0.05);
+  EXPECT_TRUE(rig.ctl.tracking);
+  EXPECT_FALSE(rig.ctl.pose_active);
+}
+
+// Soft while the person brings the object in, stiff once it is at rest: the
+// tracking gains follow the object's speed (params.tracking.arrive).
+TEST(HandoverH2R, ApproachStiffensAsTheObjectArrives) {
+  Rig rig;
+  const HandoverParams& p = rig.fsm->params();
+  ASSERT_GT(p.arrive_speed, 0.0);
+  ASSERT_GT(p.arrive_tracking_translation_stiffness, p.tracking_translation_stiffness);
+  rig.world.moveHand(kMeet, 0.5);  // faster than arrive_speed
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  rig.runFor(0.05);
+  if (rig.world.hand_vel.norm() > p.arrive_speed) {
+    EXPECT_TRUE(rig.ctl.gains_active);
+    EXPECT_NEAR(rig.ctl.gains_translation, p.tracking_translation_stiffness, 1e-9);
+    EXPECT_NEAR(rig.ctl.gains_orientation, p.tracking_orientation_stiffness, 1e-9);
+  }
+  ASSERT_TRUE(rig.runUntil([&] { return rig.world.hand_vel.norm() == 0.0; }, 5.0));
+  rig.runFor(0.3);  // the filtered speed settles
+  if (Rig::endsWith(rig.fsm->activePath(), "Approach")) {
+    EXPECT_NEAR(rig.ctl.gains_translation, p.arrive_tracking_translation_stiffness, 0.5);
+    EXPECT_NEAR(rig.ctl.gains_orientation, p.arrive_tracking_orientation_stiffness, 1.0);
+  } else {  // lining up (Grasp): the align gains at rest
+    EXPECT_NEAR(rig.ctl.gains_translation, p.align_tracking_translation_stiffness, 0.5);
+  }
+}
+
 TEST(HandoverH2R, GivesUpAfterMaxRetries) {
   Rig rig;
   const int max_retries = rig.fsm->params().max_retries;
