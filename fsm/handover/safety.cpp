@@ -17,7 +17,11 @@ bool personTooClose(const HandoverContext& h, double distance, double grasp_zone
   const bool near_tcp = positionError(h.in.hand.pose, h.in.tcp_pose) <= grasp_zone;
   const bool near_target = h.in.observed_target != ObservationTarget::kNone &&
                            positionError(h.in.hand.pose, h.in.target_pose) <= grasp_zone;
-  return !(h.in.hand.valid && (near_tcp || near_target));
+  // the hand that holds the object the robot reaches for is the meeting point, wherever on a
+  // long object the grasp lies (a bottle's cap is 15 cm from the fist that holds it)
+  const bool holds_target = h.in.observed_target == ObservationTarget::kObject && h.in.object.valid &&
+                            positionError(h.in.hand.pose, h.in.object.pose) <= grasp_zone;
+  return !(h.in.hand.valid && (near_tcp || near_target || holds_target));
 }
 
 bool HumanTooClose::evaluate(Context& ctx) {

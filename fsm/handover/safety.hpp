@@ -9,8 +9,10 @@ namespace handover::fsm {
 /// True when the person is closer to the robot than `distance` (m) where it
 /// matters: the forearm or upper arm anywhere, or the hand outside the grasp
 /// zone. The grasp zone is within `grasp_zone` (m) of the TCP or, while the
-/// observation follows a target, of the tracking target frame: there the
-/// hand is close on purpose (collision constraints still keep it untouched).
+/// observation follows a target, of the tracking target frame, or the hand
+/// holds the object the observation follows (within `grasp_zone` of it):
+/// there the hand is close on purpose (collision constraints still keep it
+/// untouched).
 bool personTooClose(const HandoverContext& h, double distance, double grasp_zone);
 
 /// Holds while personTooClose(distance, grasp_zone_radius).
