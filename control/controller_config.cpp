@@ -123,6 +123,9 @@ ControllerConfig parseControllerConfig(const YamlReader& root, const JointLimits
     cfg.tracking.weight = readWeight(*s, cfg.tracking.weight);
     cfg.tracking.translation = readAxis(*s, "translation", cfg.tracking.translation);
     cfg.tracking.orientation = readAxis(*s, "orientation", cfg.tracking.orientation);
+    if (auto v = s->optionalChild("max_speed")) cfg.tracking.max_speed = v->checkRange(v->asDouble(), 0.0, 2.0);
+    if (auto v = s->optionalChild("max_angular_speed"))
+      cfg.tracking.max_angular_speed = v->checkRange(v->asDouble(), 0.0, 10.0);
     s->finish();
   }
   if (auto s = section(root, "posture")) {

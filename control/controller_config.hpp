@@ -70,6 +70,12 @@ struct ControllerConfig {
     double weight = 1e5;
     AxisGains translation{PdGains::critical(1.0)};
     AxisGains orientation{PdGains::critical(2.0)};
+    /// Speed limit of the approach (0 = none): the PD's error is clipped
+    /// so that it asks at most this speed relative to the target (m/s,
+    /// rad/s). Stiff gains then converge fast near the target without
+    /// rushing at it from afar (TrajectoryTrackingTask::setSpeedLimits).
+    double max_speed = 0.0;
+    double max_angular_speed = 0.0;
   } tracking;
 
   struct Posture {

@@ -52,9 +52,10 @@ ControllerRegistry ControllerRegistry::shipped() {
   });
   r.addTask("trajectory_tracking", [](const ElementArgs& a) {
     const auto& c = a.config.tracking;
-    return BuiltTask{std::make_shared<TrajectoryTrackingTask>(a.model, a.name, a.config.frame, c.translation.gains,
-                                                              c.orientation.gains),
-                     c.weight, axisWeights(c.translation, c.orientation)};
+    auto task = std::make_shared<TrajectoryTrackingTask>(a.model, a.name, a.config.frame, c.translation.gains,
+                                                         c.orientation.gains);
+    task->setSpeedLimits(c.max_speed, c.max_angular_speed);
+    return BuiltTask{task, c.weight, axisWeights(c.translation, c.orientation)};
   });
   r.addTask("posture", [](const ElementArgs& a) {
     const auto& c = a.config.posture;

@@ -4,6 +4,17 @@
 
 namespace handover::control {
 
+namespace {
+/// The error a PD acts on, clipped so that it asks at most `max_speed`
+/// (K |e| <= D max_speed); unchanged without a limit.
+Vector3 speedLimited(const Vector3& e, const PdGains& g, double max_speed) {
+  if (max_speed <= 0.0 || g.stiffness <= 0.0) return e;
+  const double limit = g.damping * max_speed / g.stiffness;
+  const double n = e.norm();
+  return n > limit ? Vector3(e * (limit / n)) : e;
+}
+}  // namespace
+
 TrajectoryTrackingTask::TrajectoryTrackingTask(const Model& model, std::string name, const std::string& frame,
                                                PdGains translation, PdGains orientation)
     : name_(std::move(name)), frame_id_(model.frameId(frame)), translation_(translation), orientation_(orientation),
@@ -48,7 +59,8 @@ void TrajectoryTrackingTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen
   A.block<3, kArmDofs>(0, VariableLayout::kQdd) = J_.topRows<3>();
   A.block<3, 3>(0, VariableLayout::kObs) = -Matrix3::Identity();
   A.block<3, 3>(0, VariableLayout::kObs + 3) = skew(r);
-  b.head<3>() = -translation_.stiffness * error_.head<3>() - translation_.damping * edot_p - drift.head<3>() +
+  b.head<3>() = -translation_.stiffness * speedLimited(error_.head<3>(), translation_, max_speed_) -
+                translation_.damping * edot_p - drift.head<3>() +
                 g.acceleration.head<3>();
 
   // orientation rows
@@ -58,7 +70,8 @@ void TrajectoryTrackingTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen
     error_.tail<3>() = orientationError(R_ee, g.pose.linear());
     A.block<3, kArmDofs>(3, VariableLayout::kQdd) = J_.bottomRows<3>();
     A.block<3, 3>(3, VariableLayout::kObs + 3) = -Matrix3::Identity();
-    b.tail<3>() = -orientation_.stiffness * error_.tail<3>() - orientation_.damping * (w_ee - w_obs) -
+    b.tail<3>() = -orientation_.stiffness * speedLimited(error_.tail<3>(), orientation_, max_angular_speed_) -
+                  orientation_.damping * (w_ee - w_obs) -
                   drift.tail<3>();
     return;
   }
@@ -72,7 +85,7 @@ void TrajectoryTrackingTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen
   const Matrix3 Sb = skew(bv);
   A.block<3, kArmDofs>(3, VariableLayout::kQdd) = -Sb * J_.bottomRows<3>();
   A.block<3, 3>(3, VariableLayout::kObs + 3) = P * skew(a);
-  b.tail<3>() = P * (-orientation_.stiffness * c - orientation_.damping * cdot + Sb * drift.tail<3>() -
+  b.tail<3>() = P * (-orientation_.stiffness * speedLimited(c, orientation_, max_angular_speed_) - orientation_.damping * cdot + Sb * drift.tail<3>() -
                      w_ee.cross(w_ee.cross(bv)) + w_obs.cross(w_obs.cross(a)));
 }
 

@@ -52,6 +52,15 @@ class TrajectoryTrackingTask : public Task {
   }
   const GraspOffset& graspOffset() const { return offset_; }
   void setGains(const PdGains& translation, const PdGains& orientation);
+  /// Speed limits of the approach, m/s and rad/s (0 = none): the error the
+  /// PD acts on is clipped to |e| <= D v_max / K, where a PD asks for
+  /// v_max (K e = D v): far from the target the frame closes in at most
+  /// v_max, near it the PD converges at its own stiffness. The logged error
+  /// stays the true one. Start-up call.
+  void setSpeedLimits(double max_speed, double max_angular_speed) {
+    max_speed_ = max_speed;
+    max_angular_speed_ = max_angular_speed;
+  }
   const PdGains& translationGains() const { return translation_; }
   const PdGains& orientationGains() const { return orientation_; }
   int frameId() const { return frame_id_; }
@@ -66,6 +75,7 @@ class TrajectoryTrackingTask : public Task {
   int frame_id_ = 0;
   PdGains translation_, orientation_;
   PdGains configured_translation_, configured_orientation_;
+  double max_speed_ = 0.0, max_angular_speed_ = 0.0;  ///< m/s, rad/s (0 = none)
   GraspOffset offset_;
   Matrix6x7 J_ = Matrix6x7::Zero();
   Vector6 error_ = Vector6::Zero();

@@ -206,6 +206,45 @@ TEST(TrajectoryTrackingTask, GainsGiveThePdLaw) {
   EXPECT_LT((task.error().head<3>() - e).norm(), 1e-12);
 }
 
+// The speed limit clips the error the PD acts on to D v_max / K (so a PD at
+// rest asks at most v_max), leaves a smaller error alone and the rows' A and
+// the reported error untouched.
+TEST(TrajectoryTrackingTask, SpeedLimitClipsTheErrorThePdActsOn) {
+  std::mt19937 rng(11);
+  Data data(panda());
+  const Motion m = randomMotion(rng);
+  const GraspOffset g = someOffset(false);
+  const PdGains kt{50.0, 2.0 * std::sqrt(50.0)}, ko{100.0, 20.0};
+  TrajectoryTrackingTask free_task(panda(), "t0", "tcp", PdGains{0.0, 0.0}, PdGains{0.0, 0.0});
+  TrajectoryTrackingTask plain(panda(), "t1", "tcp", kt, ko);
+  TrajectoryTrackingTask limited(panda(), "t2", "tcp", kt, ko);
+  for (auto* t : {&free_task, &plain, &limited}) t->setGraspOffset(g);
+  Truth truth{m, g, m.X0.linear() * g.placement.linear(), panda().frameId("tcp")};
+  const Vector3 e = truth.positionError(0.0);
+  const Vector3 ed = firstDerivative([&](double t) { return truth.positionError(t); });
+  const Matrix3 R_g = m.X0.linear() * g.placement.linear();
+  const Vector3 eo = orientationError(truth.tcpPose(0.0).linear(), R_g);
+  const Vector3 wrel = truth.relativeOmega(0.0);
+  ASSERT_GT(e.norm(), 0.05);
+  ASSERT_GT(eo.norm(), 0.1);
+  // limits below what the errors ask: clipped to D v / K along the error
+  const double v = 0.5 * kt.stiffness * e.norm() / kt.damping, w = 0.5 * ko.stiffness * eo.norm() / ko.damping;
+  limited.setSpeedLimits(v, w);
+  const Rows r0 = computeRows(free_task, m, data);
+  const Rows rp = computeRows(plain, m, data);
+  const Rows rl = computeRows(limited, m, data);
+  EXPECT_LT((rl.A - rp.A).norm(), 1e-15);
+  const Vector3 e_clip = e.normalized() * (kt.damping * v / kt.stiffness);
+  EXPECT_LT(((rl.b - r0.b).head<3>() - (-kt.stiffness * e_clip - kt.damping * ed)).norm(), 1e-6 * (1.0 + kt.damping));  // ed is numerical
+  const Vector3 eo_clip = eo.normalized() * (ko.damping * w / ko.stiffness);
+  EXPECT_LT(((rl.b - r0.b).tail<3>() - (-ko.stiffness * eo_clip - ko.damping * wrel)).norm(), 1e-9);
+  EXPECT_LT((limited.error().head<3>() - e).norm(), 1e-12);
+  // limits above what the errors ask: the plain PD law
+  limited.setSpeedLimits(4.0 * v, 4.0 * w);
+  const Rows rh = computeRows(limited, m, data);
+  EXPECT_LT((rh.b - rp.b).norm(), 1e-12);
+}
+
 TEST(TrajectoryTrackingTask, FreeAxisRowsAreExactAndLeaveSpinFree) {
   std::mt19937 rng(9);
   Data data(panda());
