@@ -75,7 +75,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   cs.forearm_length = body.forearm;
   cs.upper_arm_length = body.upper_arm;
   // the trunk: sized from the stature, placed from the tracked shoulder and the declared stand
-  cs.collision.person.trunk = personTrunkFor(body);
+  cs.collision.person.trunk = personTrunkFor(body, sc.human.hand);
   cs.stand.declared = true;
   cs.stand.yaw = sc.human.stand_yaw;
   cs.stand.shoulder_side = (sc.human.hand == scenario::HandSide::Right ? 1.0 : -1.0) * body.shoulder_offset;
