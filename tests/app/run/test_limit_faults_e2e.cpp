@@ -159,4 +159,42 @@ TEST(LimitFaultsEndToEnd, SimulatorDivergenceIsAnErrorAndLeavesNoMujocoLog) {
   }
 }
 
+// Issue 16: "the held object is not a body for the controller: a finger
+// striking it under a 10 cm offset spins joint 7 to 3.0 rad/s (limit 2.61)".
+// The tracker 10 cm below the true person (twice the calibration the
+// parser allows in one axis, far beyond the 1 cm the margins budget): in the
+// give the robot presents the object 10 cm below the true hand, in the take
+// it aims 10 cm low at the object in the hand. On the code of a8f4553 the
+// strike no longer shows: 0 limit steps in all 27 shipped scenarios with
+// this offset (joint 7 peaks at 0.18 rad/s in r2h_basic, 0.91 in
+// r2h_angled_bottle, 0.35 in the default take; 1 ms logs). Pinned here: no
+// joint leaves its position, velocity or torque limit, and the run ends as
+// a handover outcome, not `unsafe` or `error`.
+namespace {
+std::string withDownwardOffset(const std::string& shipped) {
+  std::string text = testing::readText(testing::repoPath("scenes/scenarios/" + shipped));
+  const std::string expect = "\nexpect:";
+  const auto e = text.find(expect);
+  if (e != std::string::npos) text.erase(e + 1);  // the shipped expectations assume an exact tracker
+  const std::string sensor = "\nsensor:\n";
+  const auto at = text.find(sensor);
+  if (at == std::string::npos) throw std::runtime_error(shipped + " has no sensor section");
+  text.insert(at + sensor.size(), "  offset: {pos: [0, 0, -0.10]}\n");
+  return text;
+}
+}  // namespace
+
+TEST(LimitFaultsEndToEnd, ATrackerTenCentimetresLowKeepsEveryLimitInGiveAndTake) {
+  for (const char* shipped : {"r2h_basic.yaml", "r2h_angled_bottle.yaml", "default.yaml"}) {
+    const ScratchDir dir("offset_down");
+    const app::RunSummary r = runText(dir, withDownwardOffset(shipped));
+    EXPECT_EQ(r.limit_violations.velocity, 0) << shipped;
+    EXPECT_EQ(r.limit_violations.position, 0) << shipped;
+    EXPECT_EQ(r.limit_violations.torque, 0) << shipped;
+    EXPECT_EQ(r.qp_failures, 0) << shipped;
+    EXPECT_NE(r.outcome, "unsafe") << shipped << ": " << r.error_message;
+    EXPECT_NE(r.outcome, "error") << shipped << ": " << r.error_message;
+  }
+}
+
 }  // namespace handover
