@@ -386,6 +386,16 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
     const auto why = static_cast<perception::RejectReason>(k);
     r.rejected_by_reason.emplace_back(perception::toString(why), rejects[why]);
   }
+  for (const human::StretchedStep& st : person.stretchedSteps()) {
+    const scenario::ScriptStep& step = sc.human.script[st.step];
+    char b[320];
+    std::snprintf(b, sizeof b,
+                  "script step %d (line %d) moves the hand %.3f m and turns it %.2f rad in %.3f s, faster than a "
+                  "hand can (%.1f m/s, %.0f m/s^2, %.0f rad/s): the simulated person took %.3f s",
+                  st.step + 1, step.where.line, st.distance, st.angle, st.written, person.limits().max_speed,
+                  person.limits().max_acceleration, person.limits().max_angular_speed, st.used);
+    r.person_slowed.emplace_back(b);
+  }
   r.expectation_failures = checkExpectations(sc, r);
 
   if (!opt.out_dir.empty()) {

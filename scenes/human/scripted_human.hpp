@@ -47,9 +47,36 @@ struct HumanOutput {
   bool done = false;    ///< the script has ended
 };
 
+/// What a person's hand can do (the simulated person never moves faster):
+/// hands peak at 0.5-1.2 m/s in handovers and 2-3 m/s in fast motions
+/// (facts file); 40 m/s^2 is 7x a 0.6 m reach in 0.5 s (5.8 D / T^2). The
+/// wrist's turn rate is approximate. The tracker's plausibility gates
+/// (config/perception.yaml gates) use the same speed and acceleration.
+struct HandMotionLimits {
+  double max_speed = 3.0;            ///< m/s, grip point
+  double max_acceleration = 40.0;    ///< m/s^2, grip point
+  double max_angular_speed = 10.0;   ///< rad/s, hand rotation (approx)
+};
+
+/// A motion step (reach, withdraw, pull) the person takes longer than its
+/// script says: its minimum-jerk profile over the written duration would
+/// move the hand faster than HandMotionLimits (e.g. a reach of 5 ms, which
+/// would teleport the person's body into the robot).
+struct StretchedStep {
+  int step = -1;                 ///< script index
+  double written = 0.0;          ///< s, the script's duration
+  double used = 0.0;             ///< s, the shortest the limits allow
+  double distance = 0.0;         ///< m, how far the grip point moves
+  double angle = 0.0;            ///< rad, how far the hand turns
+};
+
+/// The shortest duration (s) of a rest-to-rest minimum-jerk motion over
+/// `distance` (m) and `angle` (rad) within `limits`, and at least `written`.
+double plausibleDuration(double written, double distance, double angle, const HandMotionLimits& limits);
+
 class ScriptedHuman {
  public:
-  explicit ScriptedHuman(const scenario::Scenario& scenario);
+  explicit ScriptedHuman(const scenario::Scenario& scenario, const HandMotionLimits& limits = HandMotionLimits{});
 
   /// Back to t = 0 (start pose, initial holding state).
   void reset();
@@ -62,6 +89,12 @@ class ScriptedHuman {
   const Eigen::Vector3d& shoulder() const { return shoulder_; }
   /// Direction the elbow prefers (down and away from the body), unit, world.
   const Eigen::Vector3d& elbowHint() const { return elbow_hint_; }
+  /// The motion steps the person takes longer than written (faster than a
+  /// hand moves); found once from the script (hand positions do not depend
+  /// on the run: reach and withdraw go to fixed poses, a pull moves by a
+  /// fixed vector). Empty for an ordinary script.
+  const std::vector<StretchedStep>& stretchedSteps() const { return stretched_; }
+  const HandMotionLimits& limits() const { return limits_; }
 
  private:
   void emit(HumanEventKind kind, double time);
@@ -77,6 +110,9 @@ class ScriptedHuman {
   Eigen::Isometry3d start_pose_;
   Eigen::Isometry3d torso_;
   bool starts_holding_ = false;
+  HandMotionLimits limits_;
+  std::vector<double> durations_;          ///< s, per script step: the duration the person takes
+  std::vector<StretchedStep> stretched_;
 
   // data (per run)
   HumanOutput out_;
