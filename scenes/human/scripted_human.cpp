@@ -23,15 +23,6 @@ const char* toString(HumanEventKind k) {
   return "?";
 }
 
-double plausibleDuration(double written, double distance, double angle, const HandMotionLimits& limits) {
-  // minimum jerk: peak speed 1.875 D / T, peak acceleration 5.7735 D / T^2
-  double t = written;
-  if (limits.max_speed > 0.0) t = std::max(t, 1.875 * distance / limits.max_speed);
-  if (limits.max_acceleration > 0.0) t = std::max(t, std::sqrt(5.7735 * distance / limits.max_acceleration));
-  if (limits.max_angular_speed > 0.0) t = std::max(t, 1.875 * angle / limits.max_angular_speed);
-  return t;
-}
-
 ScriptedHuman::ScriptedHuman(const scenario::Scenario& s, const HandMotionLimits& limits)
     : script_(s.human.script),
       body_(scenario::bodyDimensionsFromHeight(s.human.height)),

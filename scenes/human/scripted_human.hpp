@@ -10,6 +10,7 @@
 #include <array>
 #include <vector>
 
+#include "scenes/human/hand_motion_limits.hpp"
 #include "scenes/human/human_facts.hpp"
 #include "scenes/human/two_link_arm.hpp"
 #include "scenes/scenario/scenario.hpp"
@@ -47,17 +48,6 @@ struct HumanOutput {
   bool done = false;    ///< the script has ended
 };
 
-/// What a person's hand can do (the simulated person never moves faster):
-/// hands peak at 0.5-1.2 m/s in handovers and 2-3 m/s in fast motions
-/// (facts file); 40 m/s^2 is 7x a 0.6 m reach in 0.5 s (5.8 D / T^2). The
-/// wrist's turn rate is approximate. The tracker's plausibility gates
-/// (config/perception.yaml gates) use the same speed and acceleration.
-struct HandMotionLimits {
-  double max_speed = 3.0;            ///< m/s, grip point
-  double max_acceleration = 40.0;    ///< m/s^2, grip point
-  double max_angular_speed = 10.0;   ///< rad/s, hand rotation (approx)
-};
-
 /// A motion step (reach, withdraw, pull) the person takes longer than its
 /// script says: its minimum-jerk profile over the written duration would
 /// move the hand faster than HandMotionLimits (e.g. a reach of 5 ms, which
@@ -69,10 +59,6 @@ struct StretchedStep {
   double distance = 0.0;         ///< m, how far the grip point moves
   double angle = 0.0;            ///< rad, how far the hand turns
 };
-
-/// The shortest duration (s) of a rest-to-rest minimum-jerk motion over
-/// `distance` (m) and `angle` (rad) within `limits`, and at least `written`.
-double plausibleDuration(double written, double distance, double angle, const HandMotionLimits& limits);
 
 class ScriptedHuman {
  public:
