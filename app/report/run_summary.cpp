@@ -36,6 +36,9 @@ std::string RunSummary::toJson() const {
   for (const auto& [why, n] : rejected_by_reason) w.value(why, static_cast<double>(n));
   w.endObject();
   w.value("unseen_time", person_unseen_time).endObject();
+  w.beginArray("person_slowed");
+  for (const auto& s : person_slowed) w.element(s);
+  w.endArray();
   if (grasp_error_pos) {
     w.beginObject("grasp_error").value("pos", grasp_error_pos).value("rot_deg", grasp_error_rot_deg).endObject();
   } else {

@@ -43,6 +43,10 @@ struct RunSummary {
   /// the same per reason (perception/reject_counts.hpp names), in that order
   std::vector<std::pair<std::string, long>> rejected_by_reason;
   double person_unseen_time = 0.0;            ///< s without a usable (valid, fresh) estimate of the person
+  /// script steps the simulated person took longer than written, because a
+  /// hand cannot move that fast (human::ScriptedHuman::stretchedSteps), one
+  /// sentence each; empty for an ordinary script
+  std::vector<std::string> person_slowed;
   std::optional<double> grasp_error_pos;      ///< m
   std::optional<double> grasp_error_rot_deg;  ///< deg
   std::vector<std::string> states;            ///< visited, in order

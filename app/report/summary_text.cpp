@@ -34,6 +34,7 @@ std::string formatSummary(const RunSummary& r) {
     std::snprintf(line, sizeof line, "; person unseen %.2f s\n", r.person_unseen_time);
     os << line;
   }
+  for (const auto& s : r.person_slowed) os << "person     " << s << "\n";
   std::snprintf(line, sizeof line,
                 "limits     position %d, velocity %d, torque %d steps; QP failures %d, relaxed %d; limit guard %d\n",
                 r.limit_violations.position, r.limit_violations.velocity, r.limit_violations.torque, r.qp_failures,

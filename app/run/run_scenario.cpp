@@ -17,6 +17,7 @@
 #include "app/run/run_log.hpp"
 #include "app/run/world_setup.hpp"
 #include "app/validate/person_trunk.hpp"
+#include "scenes/human/plausible_follower.hpp"
 #include "scenes/scenario/object_geometry.hpp"
 #include "app/validate/scenario_validation.hpp"
 #include "config/input_error.hpp"
@@ -75,7 +76,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   cs.forearm_length = body.forearm;
   cs.upper_arm_length = body.upper_arm;
   // the trunk: sized from the stature, placed from the tracked shoulder and the declared stand
-  cs.collision.person.trunk = personTrunkFor(body);
+  cs.collision.person.trunk = personTrunkFor(body, sc.human.hand);
   cs.stand.declared = true;
   cs.stand.yaw = sc.human.stand_yaw;
   cs.stand.shoulder_side = (sc.human.hand == scenario::HandSide::Right ? 1.0 : -1.0) * body.shoulder_offset;
@@ -118,6 +119,11 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   }
   perception::PoseSource& source = tracker ? *tracker : static_cast<perception::PoseSource&>(sensor);
 
+  // a tracked person drives the simulated bodies as fast as a hand can (never a teleport)
+  human::PlausibleFollower follower(person.limits(), sim.timestep());
+  sim::HumanBodyPoses tracked;   // the tracked person's last valid poses
+  bool ever_tracked = false;
+
   // -- initial state --------------------------------------------------------
   const control::Vector7 q0 = sc.robot.start_q.value_or(cs.controller.posture.target);
   const Eigen::Isometry3d tcp_T_object = sc.object.grasp.inverse();
@@ -134,6 +140,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
                                                              sc.human.start);
     const human::HumanOutput& out0 = person.step(0.0, facts);
     sim.setHumanPoses(out0.poses);
+    tracked = out0.poses;
     if (sc.human.holds_object) {
       sim.placeObject(out0.poses.hand * *sc.human.holds_object);
       sim.setObjectWeld(true);
@@ -212,13 +219,26 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
       sim.apply(cmd);
       state = &machine.activePath();
       const perception::PerceptionEstimate& est = cycle.estimate();
-      if (tracker && est.human.valid) {
+      if (tracker) {
         // the simulated person's body follows the tracked person (the script
-        // still decides when the hand holds or lets go)
-        hout.poses.hand = est.human.hand;
-        hout.poses.forearm = est.human.forearm;
-        hout.poses.upper_arm = est.human.upper_arm;
-        sim.setHumanPoses(hout.poses);
+        // still decides when the hand holds or lets go), as a body can: a
+        // tracked jump is followed at a hand's speed, never teleported. It
+        // appears where the tracker first sees it and, unseen, stays where
+        // it was last seen
+        if (est.human.valid) {
+          tracked.hand = est.human.hand;
+          tracked.forearm = est.human.forearm;
+          tracked.upper_arm = est.human.upper_arm;
+          if (!ever_tracked) follower.reset(tracked);
+          ever_tracked = true;
+        }
+        if (ever_tracked) {
+          tracked.torso = hout.poses.torso;
+          hout.poses = follower.step(tracked);
+          sim.setHumanPoses(hout.poses);
+        }
+      }
+      if (tracker && est.human.valid) {
         // a tracked object sits in the grip where the tracker saw it
         if (cycle.objectTracked() && sim.objectWelded() && !adapter.payloadSet()) {
           sim.setObjectGrip(est.human.hand.inverse() * est.object.pose);
@@ -385,6 +405,25 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   for (int k = 0; k < perception::kRejectReasons; ++k) {
     const auto why = static_cast<perception::RejectReason>(k);
     r.rejected_by_reason.emplace_back(perception::toString(why), rejects[why]);
+  }
+  if (follower.slowedSteps() > 0) {
+    char b[320];
+    std::snprintf(b, sizeof b,
+                  "the tracked person moved faster than a hand can (%.1f m/s, %.0f m/s^2, %.0f rad/s) in %ld steps, "
+                  "by up to %.3f m: the simulated person followed as fast as a hand can",
+                  person.limits().max_speed, person.limits().max_acceleration, person.limits().max_angular_speed,
+                  follower.slowedSteps(), follower.largestGap());
+    r.person_slowed.emplace_back(b);
+  }
+  for (const human::StretchedStep& st : person.stretchedSteps()) {
+    const scenario::ScriptStep& step = sc.human.script[st.step];
+    char b[320];
+    std::snprintf(b, sizeof b,
+                  "script step %d (line %d) moves the hand %.3f m and turns it %.2f rad in %.3f s, faster than a "
+                  "hand can (%.1f m/s, %.0f m/s^2, %.0f rad/s): the simulated person took %.3f s",
+                  st.step + 1, step.where.line, st.distance, st.angle, st.written, person.limits().max_speed,
+                  person.limits().max_acceleration, person.limits().max_angular_speed, st.used);
+    r.person_slowed.emplace_back(b);
   }
   r.expectation_failures = checkExpectations(sc, r);
 

@@ -21,6 +21,7 @@ sim::SimOptions simOptionsFor(const scenario::Scenario& sc) {
   o.human.height = sc.human.height;
   o.human.upper_arm_length = body.upper_arm;
   o.human.forearm_length = body.forearm;
+  o.human.hand = sc.human.hand;
   return o;
 }
 

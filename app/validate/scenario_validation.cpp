@@ -55,7 +55,7 @@ const char* kindName(control::CollisionBodyKind k) {
     case control::CollisionBodyKind::kHumanForearm: return "the person's forearm";
     case control::CollisionBodyKind::kHumanUpperArm: return "the person's upper arm";
     case control::CollisionBodyKind::kObject: return "the object the person holds out";
-    case control::CollisionBodyKind::kHumanTrunk: return "the person's body (torso, legs or head)";
+    case control::CollisionBodyKind::kHumanTrunk: return "the person's body (torso, legs, head or the other arm)";
   }
   return "?";
 }
@@ -126,7 +126,7 @@ void validateScenario(const scenario::Scenario& sc) {
   control::Data data(model);
   control::CollisionConfig ccfg = control::loadCollisionConfig(control::defaultCollisionConfigPath());
   human::ScriptedHuman person(sc);
-  ccfg.person.trunk = personTrunkFor(person.body());
+  ccfg.person.trunk = personTrunkFor(person.body(), sc.human.hand);
   const control::CollisionModel cm = control::buildCollisionModel(model, ccfg);
   control::CollisionData cd(cm);
   const human::HumanOutput& h0 = person.step(0.0, human::HumanFacts{});

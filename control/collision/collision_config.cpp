@@ -111,7 +111,8 @@ Isometry readPose(const YamlReader& r) {
 }
 
 bool isPersonName(const std::string& pattern) {
-  for (const char* n : {"human_hand", "human_forearm", "human_upper_arm", "human_torso", "human_legs", "human_head"})
+  for (const char* n : {"human_hand", "human_forearm", "human_upper_arm", "human_torso", "human_legs", "human_head",
+                        "human_free_arm"})
     if (globMatch(pattern, n)) return true;
   return false;
 }
@@ -146,6 +147,7 @@ CollisionConfig parse(const YamlReader& root) {
     }
     if (auto c = p->optionalChild("forearm_radius")) cfg.person.forearm_radius = c->checkRange(c->asDouble(), 0.001, 0.5);
     if (auto c = p->optionalChild("upper_arm_radius")) cfg.person.upper_arm_radius = c->checkRange(c->asDouble(), 0.001, 0.5);
+    if (auto c = p->optionalChild("free_arm_radius")) cfg.person.free_arm_radius = c->checkRange(c->asDouble(), 0.001, 0.5);
     if (auto c = p->optionalChild("margin")) cfg.person.margin = c->checkRange(c->asDouble(), 0.0, 0.5);
     p->finish();
   }

@@ -8,7 +8,9 @@
 //   "table" (a box whose top is the plane z = 0);
 //   "human_hand" (a box in the hand frame), "human_forearm",
 //   "human_upper_arm" (capsules along the segment's z axis), "human_torso",
-//   "human_legs" (boxes in the torso frame), "human_head" (a sphere).
+//   "human_legs" (boxes in the torso frame), "human_head" (a sphere),
+//   "human_free_arm" (the other arm hanging beside the torso: a capsule in
+//   the torso frame).
 // A list item that is the name of a group expands to that group's patterns.
 // Units: m, m/s.
 #pragma once
@@ -68,6 +70,12 @@ struct PersonTrunk {
   double legs_centre = 0.46375;                     ///< m
   double head_radius = 0.105;                       ///< m
   double head_centre = 1.6275;                      ///< m
+  /// The other arm (not handing, not tracked), hanging beside the torso: the
+  /// core segment of one capsule from the shoulder to the fingertips (its
+  /// radius: PersonSettings::free_arm_radius). Defaults: a 1.75 m person
+  /// handing with the right hand (the free arm on the left, +y).
+  Vector3 free_arm_top = Vector3(0.0, 0.235, 1.4315);
+  Vector3 free_arm_bottom = Vector3(0.0, 0.235, 0.63525);
 };
 
 struct PersonSettings {
@@ -75,6 +83,9 @@ struct PersonSettings {
   Isometry hand_offset = Isometry::Identity();     ///< box centre in the hand (grip point) frame
   double forearm_radius = 0.045;    ///< m
   double upper_arm_radius = 0.055;  ///< m
+  /// m, the other (hanging, untracked) arm's capsule: one radius for upper
+  /// arm, forearm and hand, so at least the upper arm's
+  double free_arm_radius = 0.045;
   double margin = 0.03;             ///< m, default extra clearance for sensor noise
   PersonTrunk trunk;                ///< legs, torso, head (set by the runtime)
 };

@@ -56,7 +56,7 @@ void updatePoses(const CollisionModel& cm, CollisionData& cd, const Data& data, 
   };
   segment(cm.human_forearm, env.forearm, env.forearm_length, env.forearm_velocity);
   segment(cm.human_upper_arm, env.upper_arm, env.upper_arm_length, env.upper_arm_velocity);
-  for (int idx : {cm.human_torso, cm.human_legs, cm.human_head}) {
+  for (int idx : {cm.human_torso, cm.human_legs, cm.human_head, cm.human_free_arm}) {
     cd.body_pose[idx] = env.torso * cm.bodies[idx].local;
     cd.body_twist[idx].setZero();  // a person standing: the trunk's motion is not estimated
   }

@@ -125,6 +125,11 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
   cm.human_legs = addEnv("human_legs", CollisionBodyKind::kHumanTrunk, box, 0.0, above(trunk.legs_centre));
   seg.length = 0.0;  // a sphere: a point core with a radius
   cm.human_head = addEnv("human_head", CollisionBodyKind::kHumanTrunk, seg, trunk.head_radius, above(trunk.head_centre));
+  if (!trunk.free_arm_top.allFinite() || !trunk.free_arm_bottom.allFinite() || !(cfg.person.free_arm_radius > 0.0))
+    throw InputError(cfg.file + ": the person's free arm must be finite with a radius > 0");
+  seg.length = (trunk.free_arm_bottom - trunk.free_arm_top).norm();
+  cm.human_free_arm = addEnv("human_free_arm", CollisionBodyKind::kHumanTrunk, seg, cfg.person.free_arm_radius,
+                             segmentFrame(trunk.free_arm_top, trunk.free_arm_bottom));
   // cores are centred on their frame, as the object frame is on its shape
   cm.object = addEnv("object", CollisionBodyKind::kObject, cfg.object.shape,
                      cfg.object.shape.kind == ShapeSpec::Kind::kBox ? 0.0 : cfg.object.radius, Isometry::Identity());

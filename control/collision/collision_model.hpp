@@ -3,7 +3,8 @@
 //
 // Bodies: one per robot capsule (Model::capsules, moved by its body), plus the
 // table (static box, top face at z = 0) and the person's hand (box), forearm
-// and upper arm (capsules), torso and legs (boxes) and head (sphere). Each body is a "core" shape (segment or box) with
+// and upper arm (capsules), torso and legs (boxes), head (sphere) and the
+// other arm hanging beside the torso (capsule). Each body is a "core" shape (segment or box) with
 // a radius around it; distances are core distance minus radii minus margin.
 // Pairs: every (robot capsule, other body) pair produced by the config's pair
 // rules, with the rule's damper settings and margin. Adjacent and same-body
@@ -21,7 +22,7 @@ namespace handover::control {
 
 enum class CollisionBodyKind {
   kRobot, kTable, kHumanHand, kHumanForearm, kHumanUpperArm, kObject,
-  kHumanTrunk  ///< legs, torso or head: fixed shapes in the torso frame
+  kHumanTrunk  ///< legs, torso, head or the hanging free arm: fixed shapes in the torso frame
 };
 
 struct CollisionBody {
@@ -62,6 +63,7 @@ struct CollisionModel {
   double broadphase_margin = 0.05;         ///< m
   int table = -1, human_hand = -1, human_forearm = -1, human_upper_arm = -1, object = -1;  ///< body indices
   int human_torso = -1, human_legs = -1, human_head = -1;                                  ///< body indices (trunk)
+  int human_free_arm = -1;  ///< body index: the other arm, hanging beside the torso (a trunk body)
 
   /// Index of a rule, or -1.
   int ruleIndex(const std::string& name) const;

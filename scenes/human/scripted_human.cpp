@@ -1,5 +1,6 @@
 #include "scenes/human/scripted_human.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "scenes/human/minimum_jerk.hpp"
@@ -22,12 +23,13 @@ const char* toString(HumanEventKind k) {
   return "?";
 }
 
-ScriptedHuman::ScriptedHuman(const scenario::Scenario& s)
+ScriptedHuman::ScriptedHuman(const scenario::Scenario& s, const HandMotionLimits& limits)
     : script_(s.human.script),
       body_(scenario::bodyDimensionsFromHeight(s.human.height)),
       shoulder_(scenario::shoulderPosition(body_, s.human.stand_pos, s.human.stand_yaw, s.human.hand)),
       start_pose_(s.human.start),
-      starts_holding_(s.human.holds_object.has_value()) {
+      starts_holding_(s.human.holds_object.has_value()),
+      limits_(limits) {
   // the elbow hangs down and a little away from the body, on the hand's side
   const double yaw = s.human.stand_yaw;
   const Eigen::Vector3d right(std::sin(yaw), -std::cos(yaw), 0.0);
@@ -36,6 +38,26 @@ ScriptedHuman::ScriptedHuman(const scenario::Scenario& s)
   torso_ = Eigen::Isometry3d::Identity();
   torso_.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   torso_.translation() = Eigen::Vector3d(s.human.stand_pos.x(), s.human.stand_pos.y(), scenario::kFloorZ);
+  // the hand's path is fixed by the script: walk it once for the durations a hand can keep
+  Eigen::Vector3d pos = start_pose_.translation();
+  Eigen::Quaterniond rot = Eigen::Quaterniond(start_pose_.rotation()).normalized();
+  durations_.assign(script_.size(), 0.0);
+  for (std::size_t i = 0; i < script_.size(); ++i) {
+    const scenario::ScriptStep& st = script_[i];
+    durations_[i] = st.duration;
+    if (st.kind != StepKind::Reach && st.kind != StepKind::Withdraw && st.kind != StepKind::Pull) continue;
+    Eigen::Vector3d to = st.kind == StepKind::Pull ? Eigen::Vector3d(pos + st.dir * st.distance) : st.pos;
+    Eigen::Quaterniond to_rot = rot;
+    if (st.kind != StepKind::Pull && st.rpy) to_rot = Eigen::Quaterniond(scenario::rotationFromRpy(*st.rpy)).normalized();
+    const double distance = (to - pos).norm();
+    const double angle = rot.angularDistance(to_rot);
+    durations_[i] = plausibleDuration(st.duration, distance, angle, limits);
+    if (durations_[i] > st.duration) {
+      stretched_.push_back({static_cast<int>(i), st.duration, durations_[i], distance, angle});
+    }
+    pos = to;
+    rot = to_rot;
+  }
   reset();
 }
 
@@ -101,17 +123,19 @@ const HumanOutput& ScriptedHuman::step(double t, const HumanFacts& facts) {
       case StepKind::Reach:
       case StepKind::Withdraw:
       case StepKind::Pull: {
-        const double s = elapsed / st.duration;
+        // the duration a hand can keep (stretchedSteps(): longer than written when that is too fast)
+        const double duration = durations_[index_];
+        const double s = elapsed / duration;
         if (s >= 1.0) {
           hand_pos_ = to_pos_;
           hand_rot_ = to_rot_;
           finished = true;
-          t_end = step_start_ + st.duration;
+          t_end = step_start_ + duration;
         } else {
           const double phase = minimumJerkPhase(s);
           hand_pos_ = from_pos_ + phase * (to_pos_ - from_pos_);
           hand_rot_ = from_rot_.slerp(phase, to_rot_);
-          out_.hand_velocity = (minimumJerkRate(s) / st.duration) * (to_pos_ - from_pos_);
+          out_.hand_velocity = (minimumJerkRate(s) / duration) * (to_pos_ - from_pos_);
         }
         break;
       }

@@ -10,6 +10,7 @@
 #include <array>
 #include <vector>
 
+#include "scenes/human/hand_motion_limits.hpp"
 #include "scenes/human/human_facts.hpp"
 #include "scenes/human/two_link_arm.hpp"
 #include "scenes/scenario/scenario.hpp"
@@ -47,9 +48,21 @@ struct HumanOutput {
   bool done = false;    ///< the script has ended
 };
 
+/// A motion step (reach, withdraw, pull) the person takes longer than its
+/// script says: its minimum-jerk profile over the written duration would
+/// move the hand faster than HandMotionLimits (e.g. a reach of 5 ms, which
+/// would teleport the person's body into the robot).
+struct StretchedStep {
+  int step = -1;                 ///< script index
+  double written = 0.0;          ///< s, the script's duration
+  double used = 0.0;             ///< s, the shortest the limits allow
+  double distance = 0.0;         ///< m, how far the grip point moves
+  double angle = 0.0;            ///< rad, how far the hand turns
+};
+
 class ScriptedHuman {
  public:
-  explicit ScriptedHuman(const scenario::Scenario& scenario);
+  explicit ScriptedHuman(const scenario::Scenario& scenario, const HandMotionLimits& limits = HandMotionLimits{});
 
   /// Back to t = 0 (start pose, initial holding state).
   void reset();
@@ -62,6 +75,12 @@ class ScriptedHuman {
   const Eigen::Vector3d& shoulder() const { return shoulder_; }
   /// Direction the elbow prefers (down and away from the body), unit, world.
   const Eigen::Vector3d& elbowHint() const { return elbow_hint_; }
+  /// The motion steps the person takes longer than written (faster than a
+  /// hand moves); found once from the script (hand positions do not depend
+  /// on the run: reach and withdraw go to fixed poses, a pull moves by a
+  /// fixed vector). Empty for an ordinary script.
+  const std::vector<StretchedStep>& stretchedSteps() const { return stretched_; }
+  const HandMotionLimits& limits() const { return limits_; }
 
  private:
   void emit(HumanEventKind kind, double time);
@@ -77,6 +96,9 @@ class ScriptedHuman {
   Eigen::Isometry3d start_pose_;
   Eigen::Isometry3d torso_;
   bool starts_holding_ = false;
+  HandMotionLimits limits_;
+  std::vector<double> durations_;          ///< s, per script step: the duration the person takes
+  std::vector<StretchedStep> stretched_;
 
   // data (per run)
   HumanOutput out_;

@@ -14,6 +14,9 @@
 //   hip (legs box top)            0.530 H  torso box from the hip to 0.810 H
 //   head centre                   0.930 H  head sphere radius 0.06 H
 //   torso box depth x width       0.22 x 0.38 m; legs box 0.18 x 0.32 m (fixed, not scaled)
+// The other arm (not handing, not tracked; freeArmInTorso): hangs relaxed beside the torso,
+//   upper arm 0.205 H, forearm + hand 0.270 H (facts file), capsule radii 0.045 / 0.035 m
+//   (the simulated handing arm's, fixed), its axis just outside the torso box.
 // A 1.75 m person: upper arm 0.359, forearm 0.284, wrist-grip 0.075, reach
 // (shoulder to grip point, arm straight) 0.718, shoulder 0.68 above the table.
 // All functions are pure and real-time safe.
@@ -43,6 +46,9 @@ struct BodyDimensions {
   double legs_width = 0.32;         ///< legs box along y, m
   double head_centre = 0.0;         ///< head sphere centre above the floor, m
   double head_radius = 0.0;         ///< m
+  double hand_length = 0.0;         ///< wrist to fingertip, m
+  double upper_arm_radius = 0.045;  ///< m, the simulated upper arms' capsule radius (not scaled)
+  double forearm_radius = 0.035;    ///< m, the simulated forearms' (and hanging hand's) radius (not scaled)
 
   /// Elbow to grip point, m: the second link of the two-link arm.
   double elbowToGrip() const { return forearm + wrist_to_grip; }
@@ -58,6 +64,20 @@ BodyDimensions bodyDimensionsFromHeight(double height);
 /// yaw = pi faces the robot from +x).
 Eigen::Vector3d shoulderPosition(const BodyDimensions& body, const Eigen::Vector2d& stand_xy,
                                  double yaw, HandSide side);
+
+/// The arm the person does not hand with: nobody tracks it, so the simulated
+/// person and the controller both take it as hanging relaxed beside the
+/// torso. Capsule cores in the torso frame (origin on the floor under the body
+/// centre, x forward, y to the person's left, z up), m: the upper arm from
+/// `shoulder` to `elbow` (radius upper_arm_radius), the forearm and hand from
+/// `elbow` to `tip` (radius forearm_radius; the fingertips are at tip minus
+/// that radius in z). On the side opposite `handing`.
+struct HangingArm {
+  Eigen::Vector3d shoulder = Eigen::Vector3d::Zero();
+  Eigen::Vector3d elbow = Eigen::Vector3d::Zero();
+  Eigen::Vector3d tip = Eigen::Vector3d::Zero();
+};
+HangingArm freeArmInTorso(const BodyDimensions& body, HandSide handing);
 
 /// Nearest distance (m) from the shoulder that the grip point can sit at
 /// without the hand passing through the shoulder.

@@ -110,6 +110,15 @@ std::string buildSceneXml(const std::string& template_text, const SimOptions& op
   set("human_torso_geom", "pos", {0.0, 0.0, 0.5 * (shoulder + hip)});
   set("human_head_geom", "size", {body.head_radius});
   set("human_head_geom", "pos", {0.0, 0.0, body.head_centre});
+  // the other arm hangs beside the torso (body_dimensions.hpp freeArmInTorso)
+  const scenario::HangingArm free_arm = scenario::freeArmInTorso(body, h.hand);
+  auto vertical = [&](const std::string& geom, const Eigen::Vector3d& top, const Eigen::Vector3d& bottom, double r) {
+    const Eigen::Vector3d c = 0.5 * (top + bottom);
+    set(geom, "pos", {c.x(), c.y(), c.z()});
+    set(geom, "size", {r, 0.5 * (top - bottom).norm()});
+  };
+  vertical("human_free_upper_arm_geom", free_arm.shoulder, free_arm.elbow, body.upper_arm_radius);
+  vertical("human_free_forearm_geom", free_arm.elbow, free_arm.tip, body.forearm_radius);
   set("human_upper_arm_geom", "size", {0.045, 0.5 * h.upper_arm_length});
   set("human_upper_arm_geom", "pos", {0.0, 0.0, 0.5 * h.upper_arm_length});
   set("human_forearm_geom", "size", {0.035, 0.5 * h.forearm_length});

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "scenes/scenario/body_dimensions.hpp"
+
 namespace handover::sim {
 
 enum class ObjectShape { Cylinder, Box, Sphere };
@@ -29,6 +31,8 @@ struct HumanOptions {
   double height = 1.75;            ///< m, stature (sizes legs, torso, head)
   double upper_arm_length = 0.33;  ///< m, shoulder to elbow
   double forearm_length = 0.27;    ///< m, elbow to wrist
+  /// the handing (tracked) hand; the other arm hangs beside the torso
+  scenario::HandSide hand = scenario::HandSide::Right;
 };
 
 struct SimOptions {

@@ -159,4 +159,112 @@ TEST(LimitFaultsEndToEnd, SimulatorDivergenceIsAnErrorAndLeavesNoMujocoLog) {
   }
 }
 
+// Issue 16: "the held object is not a body for the controller: a finger
+// striking it under a 10 cm offset spins joint 7 to 3.0 rad/s (limit 2.61)".
+// The tracker 10 cm below the true person (twice the calibration the
+// parser allows in one axis, far beyond the 1 cm the margins budget): in the
+// give the robot presents the object 10 cm below the true hand, in the take
+// it aims 10 cm low at the object in the hand. On the code of a8f4553 the
+// strike no longer shows: 0 limit steps in all 27 shipped scenarios with
+// this offset (joint 7 peaks at 0.18 rad/s in r2h_basic, 0.91 in
+// r2h_angled_bottle, 0.35 in the default take; 1 ms logs). Pinned here: no
+// joint leaves its position, velocity or torque limit, and the run ends as
+// a handover outcome, not `unsafe` or `error`.
+namespace {
+std::string withDownwardOffset(const std::string& shipped) {
+  std::string text = testing::readText(testing::repoPath("scenes/scenarios/" + shipped));
+  const std::string expect = "\nexpect:";
+  const auto e = text.find(expect);
+  if (e != std::string::npos) text.erase(e + 1);  // the shipped expectations assume an exact tracker
+  const std::string sensor = "\nsensor:\n";
+  const auto at = text.find(sensor);
+  if (at == std::string::npos) throw std::runtime_error(shipped + " has no sensor section");
+  text.insert(at + sensor.size(), "  offset: {pos: [0, 0, -0.10]}\n");
+  return text;
+}
+}  // namespace
+
+TEST(LimitFaultsEndToEnd, ATrackerTenCentimetresLowKeepsEveryLimitInGiveAndTake) {
+  for (const char* shipped : {"r2h_basic.yaml", "r2h_angled_bottle.yaml", "default.yaml"}) {
+    const ScratchDir dir("offset_down");
+    const app::RunSummary r = runText(dir, withDownwardOffset(shipped));
+    EXPECT_EQ(r.limit_violations.velocity, 0) << shipped;
+    EXPECT_EQ(r.limit_violations.position, 0) << shipped;
+    EXPECT_EQ(r.limit_violations.torque, 0) << shipped;
+    EXPECT_EQ(r.qp_failures, 0) << shipped;
+    EXPECT_NE(r.outcome, "unsafe") << shipped << ": " << r.error_message;
+    EXPECT_NE(r.outcome, "error") << shipped << ": " << r.error_message;
+  }
+}
+
+// Issue 16: "a tracked hand that jumps into the robot". The default scenario
+// whose person, while the gripper closes in above the bottle, moves the hand
+// 0.15 m up into the gripper in 5 ms: the simulated person teleported the
+// bottle into the fingers (the plausibility gates refused the tracker's
+// samples, but the simulated bodies still struck the arm): 297 position- and
+// 275 velocity-limit steps, 154 QP failures, `unsafe`. The person now takes
+// the 0.146 s a hand needs (3 m/s, 40 m/s^2) and the summary says so; on
+// 2026-11-26 the robot then kept every limit and handed over. Asserted: no
+// position step, no QP failure, no contact, and at most a blow's worth of
+// velocity steps (the same jump aimed 6 cm higher or at the wrist leaves
+// 15-74: the bottle striking the gripper at a hand's speed, docs/safety.md).
+TEST(LimitFaultsEndToEnd, AHandThatJumpsIntoTheGripperMovesAsAHandCan) {
+  const ScratchDir dir("jump");
+  const app::RunSummary r = runText(
+      dir, defaultWith({{"    - wait:     {until: fingers_on_object, timeout: 8.0, delay: 0.1}",
+                         "    - hold:     {duration: 0.8}\n"
+                         "    - reach:    {pos: [0.51, 0.03, 0.44], duration: 0.005}\n"
+                         "    - hold:     {duration: 1.5}\n"
+                         "    - wait:     {until: fingers_on_object, timeout: 4.0, delay: 0.1}"}}));
+  ASSERT_EQ(r.person_slowed.size(), 1u);
+  EXPECT_NE(r.person_slowed[0].find("script step 4"), std::string::npos) << r.person_slowed[0];
+  EXPECT_EQ(r.limit_violations.position, 0);
+  EXPECT_LT(r.limit_violations.velocity, 100);  // was 275
+  EXPECT_EQ(r.limit_violations.torque, 0);
+  EXPECT_EQ(r.qp_failures, 0);                  // was 154
+  EXPECT_EQ(r.human_contacts, 0);
+  EXPECT_NE(r.outcome, "error") << r.error_message;
+}
+
+// The same jump in a tracker recording (the default person's reach, then the
+// hand 0.15 m up into the gripper from t = 2.4 s on, holding there): the
+// gates refused three samples, then the estimate followed, and the simulated
+// person (driven by the tracked one) teleported after it: 219 position- and
+// 259 velocity-limit steps, 131 QP failures. The simulated body now follows
+// as fast as a hand can and the summary says so. What remains is the bottle
+// striking the gripper at a hand's speed (the simulated person does not
+// yield): a few dozen velocity-limit steps (29 on 2026-11-26), no contact
+// with the person, no position step, no QP failure.
+TEST(LimitFaultsEndToEnd, ATrackedHandThatJumpsIntoTheGripperMovesTheSimulatedPersonAsAHandCan) {
+  const ScratchDir dir("tracked_jump");
+  std::string csv =
+      "t,hand_x,hand_y,hand_z,hand_qw,hand_qx,hand_qy,hand_qz,forearm_x,forearm_y,forearm_z,forearm_qw,forearm_qx,"
+      "forearm_qy,forearm_qz,upper_arm_x,upper_arm_y,upper_arm_z,upper_arm_qw,upper_arm_qx,upper_arm_qy,upper_arm_qz\n";
+  const double c = std::sqrt(0.5);
+  char line[512];
+  for (int k = 0; k < 8 * 60; ++k) {
+    const double t = k / 60.0;
+    const double u = std::min(1.0, t / 1.2);
+    const double s = u * u * u * (10.0 - 15.0 * u + 6.0 * u * u);
+    double x = 0.85 - 0.30 * s, y = 0.25 - 0.20 * s, z = 0.10 + 0.20 * s;
+    if (t >= 2.4) x = 0.51, y = 0.03, z = 0.44;
+    std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,1,0,0,0,%.17g,%.17g,%.17g,%.17g,0,%.17g,0,%.17g,%.17g,%.17g,%.17g,0,%.17g,0\n",
+                  t, x, y, z, x + 0.16, y, z - 0.02, c, c, x + 0.45, y, z + 0.05, c, c);
+    csv += line;
+  }
+  const std::string path = dir.file("jump.csv");
+  testing::writeText(path, csv);
+  const app::RunSummary r =
+      runText(dir, defaultWith({{"duration: 12.0", "duration: 8.0"}, {"max_total_time: 10.0", "max_total_time: 8.0"}}),
+              "csv:" + path);
+  ASSERT_EQ(r.person_slowed.size(), 1u);
+  EXPECT_NE(r.person_slowed[0].find("tracked person moved faster than a hand can"), std::string::npos)
+      << r.person_slowed[0];
+  EXPECT_EQ(r.limit_violations.position, 0);
+  EXPECT_EQ(r.qp_failures, 0);
+  EXPECT_EQ(r.human_contacts, 0);
+  EXPECT_LT(r.limit_violations.velocity, 100);  // was 259; the blow of the held bottle remains
+  EXPECT_NE(r.outcome, "error") << r.error_message;
+}
+
 }  // namespace handover

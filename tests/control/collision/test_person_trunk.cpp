@@ -97,6 +97,75 @@ TEST(PersonTrunk, HeadIsASphereOfItsRadius) {
   EXPECT_NEAR(cd.results[0].distance, 0.3 - r - link0.radius, 1e-6);
 }
 
+// The other arm (untracked, hanging beside the torso) is a capsule of the
+// trunk: its fingertip end straight above link 0's capsule end measures the
+// gap less both radii, and it follows the torso frame.
+TEST(PersonTrunk, FreeArmIsACapsuleHangingInTheTorsoFrame) {
+  const Model& m = pandaModel();
+  Data data(m);
+  computeAll(m, data, ready(), Vector7::Zero());
+  const CollisionConfig cfg = parseCollisionConfig(
+      "person: {free_arm_radius: 0.05}\n"
+      "pairs:\n  - {name: free_arm, robot: panda_link0, other: human_free_arm, margin: 0.0, iDist: 0.5}\n",
+      "free_arm.yaml");
+  const CollisionModel cm = buildCollisionModel(m, cfg);
+  CollisionData cd(cm);
+  ASSERT_EQ(cm.numPairs(), 1);
+  const CollisionBody& arm = cm.bodies[cm.pairs[0].other_body];
+  EXPECT_EQ(arm.name, "human_free_arm");
+  EXPECT_EQ(arm.kind, CollisionBodyKind::kHumanTrunk);
+  EXPECT_TRUE(arm.isPerson());
+  EXPECT_DOUBLE_EQ(arm.radius, 0.05);
+  const PersonTrunk& t = cfg.person.trunk;
+  // default: a right hand hands, the left (+y in the torso frame) hangs beside the torso box
+  EXPECT_GT(t.free_arm_top.y(), 0.5 * t.torso_size.y());
+  EXPECT_GT(t.free_arm_top.z(), t.free_arm_bottom.z());
+
+  const CollisionBody& link0 = cm.bodies[cm.pairs[0].robot_body];
+  const Vector3 top = link0.local * Vector3(0, 0, 0.5 * link0.shape.length);
+  CollisionEnvironment env;
+  env.person_valid = env.trunk_valid = true;
+  env.torso.translation() = top + Vector3(0, 0, 0.3) - t.free_arm_bottom;
+  updateCollisions(cm, cd, m, data, env);
+  ASSERT_TRUE(cd.results[0].active);
+  EXPECT_NEAR(cd.results[0].distance, 0.3 - 0.05 - link0.radius, 1e-6);
+  // turned half a turn about the fingertip's vertical: the same gap
+  env.torso.linear() = Eigen::AngleAxisd(M_PI, Vector3::UnitZ()).toRotationMatrix();
+  env.torso.translation() = top + Vector3(0, 0, 0.3) - env.torso.linear() * t.free_arm_bottom;
+  updateCollisions(cm, cd, m, data, env);
+  EXPECT_NEAR(cd.results[0].distance, 0.3 - 0.05 - link0.radius, 1e-6);
+  env.trunk_valid = false;  // known only with the trunk
+  updateCollisions(cm, cd, m, data, env);
+  EXPECT_FALSE(cd.results[0].active);
+}
+
+// The shipped rules keep every arm link and the gripper off the free arm with
+// the person margin and the sensing budget.
+TEST(PersonTrunk, ShippedRulesPairTheFreeArmWithTheWholeArm) {
+  const CollisionConfig cfg = loadCollisionConfig(defaultCollisionConfigPath());
+  const CollisionModel cm = buildCollisionModel(pandaModel(), cfg);
+  int pairs = 0;
+  bool hand = false;
+  for (const CollisionPair& p : cm.pairs) {
+    if (cm.bodies[p.other_body].name != "human_free_arm") continue;
+    ++pairs;
+    hand = hand || cm.bodies[p.robot_body].link == "panda_hand";
+    EXPECT_NEAR(p.margin, cfg.person.margin + cfg.sensing_error.budget(), 1e-12) << cm.pairLabel(static_cast<int>(&p - cm.pairs.data()));
+  }
+  EXPECT_GE(pairs, 7);
+  EXPECT_TRUE(hand);
+}
+
+TEST(PersonTrunk, FreeArmRadiusIsValidated) {
+  const std::string pairs = "pairs: [{name: a, robot: panda_hand, other: human_free_arm}]\n";
+  try {
+    parseCollisionConfig("person: {free_arm_radius: 0}\n" + pairs, "bad.yaml");
+    FAIL() << "a zero radius was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("person.free_arm_radius"), std::string::npos) << e.what();
+  }
+}
+
 // Every pair with the person carries the declared sensing budget on top of
 // its rule's margin, except `sharing` rules; pairs with the table do not.
 TEST(SensingBudget, EntersThePersonPairsMargins) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "scenes/human/minimum_jerk.hpp"
@@ -188,4 +190,49 @@ TEST(ScriptedHuman, ArmBodiesMeetTheHand) {
   for (int k = 0; k <= 2100; ++k) withdrawing = withdrawing || hasEvent(h2.step(k * kDt, {}), HumanEventKind::Withdrawing, &when);
   EXPECT_TRUE(withdrawing);
   EXPECT_NEAR(when, 1.0, 1e-12);
+}
+
+// Issue 16: a reach written as 5 ms (a hand that jumps into the robot) used to
+// teleport the simulated person: the hand moved 0.15 m in 5 steps, its body
+// struck the arm. The person takes as long as a hand needs (3 m/s, 40 m/s^2)
+// and says so (stretchedSteps); later steps start that much later.
+TEST(ScriptedHuman, AReachFasterThanAHandCanIsSlowedToWhatAHandCan) {
+  const auto sc = make(
+      "    - reach: {pos: [0.55, 0.05, 0.30], duration: 1.2}\n"
+      "    - reach: {pos: [0.50, 0.03, 0.44], duration: 0.005}\n"
+      "    - hold: {duration: 0.5}\n");
+  const HandMotionLimits limits;
+  ScriptedHuman h(sc, limits);
+  const double D = (Eigen::Vector3d(0.50, 0.03, 0.44) - Eigen::Vector3d(0.55, 0.05, 0.30)).norm();
+  ASSERT_EQ(h.stretchedSteps().size(), 1u);  // the 1.2 s reach is ordinary
+  const StretchedStep& st = h.stretchedSteps()[0];
+  EXPECT_EQ(st.step, 1);
+  EXPECT_DOUBLE_EQ(st.written, 0.005);
+  EXPECT_NEAR(st.distance, D, 1e-12);
+  EXPECT_NEAR(st.used, std::max(1.875 * D / limits.max_speed, std::sqrt(5.7735 * D / limits.max_acceleration)), 1e-12);
+
+  Eigen::Vector3d last = h.step(0.0, HumanFacts{}).poses.hand.translation();
+  double peak_speed = 0.0, peak_step = 0.0, reached = -1.0;
+  for (int k = 1; k <= 2000; ++k) {
+    const double t = k * kDt;
+    const HumanOutput& o = h.step(t, HumanFacts{});
+    const Eigen::Vector3d p = o.poses.hand.translation();
+    peak_step = std::max(peak_step, (p - last).norm());
+    peak_speed = std::max(peak_speed, o.hand_speed);
+    if (reached < 0.0 && (p - Eigen::Vector3d(0.50, 0.03, 0.44)).norm() < 1e-9) reached = t;
+    last = p;
+  }
+  EXPECT_LE(peak_speed, limits.max_speed + 1e-9);
+  EXPECT_LE(peak_step, limits.max_speed * kDt + 1e-9);  // no teleport between two steps
+  EXPECT_NEAR(reached, 1.2 + st.used, 2 * kDt);
+}
+
+TEST(ScriptedHuman, PlausibleDurationKeepsSpeedAccelerationAndTurnRate) {
+  const HandMotionLimits lim;
+  EXPECT_DOUBLE_EQ(plausibleDuration(1.0, 0.3, 0.5, lim), 1.0);  // an ordinary reach keeps its time
+  const double T = plausibleDuration(0.0, 0.6, 0.0, lim);
+  EXPECT_LE(1.875 * 0.6 / T, lim.max_speed + 1e-12);
+  EXPECT_LE(5.7735 * 0.6 / (T * T), lim.max_acceleration + 1e-9);
+  const double R = plausibleDuration(0.0, 0.0, 3.0, lim);  // a half turn of the wrist in no time
+  EXPECT_NEAR(1.875 * 3.0 / R, lim.max_angular_speed, 1e-9);
 }

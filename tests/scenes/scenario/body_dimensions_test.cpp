@@ -31,3 +31,23 @@ TEST(BodyDimensions, ShoulderSidesFollowFacing) {
   // facing +x (yaw = 0): the right shoulder is at -y
   EXPECT_LT(shoulderPosition(b, {0, 0}, 0.0, HandSide::Right).y(), -0.1);
 }
+
+TEST(BodyDimensions, FreeArmHangsBesideTheTorsoOppositeTheHandingArm) {
+  const BodyDimensions b = bodyDimensionsFromHeight(1.759);
+  const HangingArm right_hands = freeArmInTorso(b, HandSide::Right);
+  const HangingArm left_hands = freeArmInTorso(b, HandSide::Left);
+  // torso frame +y is the person's left: a right-handed giver's free arm is there,
+  // its capsule clear of the torso box
+  EXPECT_GE(right_hands.shoulder.y() - b.upper_arm_radius, 0.5 * b.torso_width - 1e-12);
+  EXPECT_LE(left_hands.shoulder.y() + b.upper_arm_radius, -0.5 * b.torso_width + 1e-12);
+  EXPECT_NEAR(right_hands.shoulder.z(), b.shoulder_height, 1e-12);
+  // facts file: upper arm 0.361, forearm + hand 0.483 for a 1.759 m person
+  EXPECT_NEAR((right_hands.elbow - right_hands.shoulder).norm(), 0.361, 0.005);
+  const double fingertip = right_hands.tip.z() - b.forearm_radius;
+  EXPECT_NEAR(right_hands.elbow.z() - fingertip, 0.483, 0.015);
+  // hanging: straight down, fingertips above the floor, below the hip
+  EXPECT_NEAR(right_hands.tip.x(), 0.0, 1e-12);
+  EXPECT_NEAR(right_hands.tip.y(), right_hands.shoulder.y(), 1e-12);
+  EXPECT_GT(fingertip, 0.0);
+  EXPECT_LT(fingertip, b.hip_height);
+}

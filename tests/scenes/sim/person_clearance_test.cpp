@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "scenes/scenario/body_dimensions.hpp"
 #include "scenes/sim/simulation.hpp"
 #include "sim_test_support.hpp"
 
@@ -75,6 +76,42 @@ TEST(PersonClearance, PenetrationOfHandTorsoAndHeadIsNegative) {
   p = personAway();
   p.torso = test::pose(tcp.translation().x(), tcp.translation().y(), tcp.translation().z() - 0.93 * height);
   EXPECT_LT(clearanceWith(sim, p).all, -0.01);
+}
+
+// The other arm hangs beside the torso, on the side opposite the handing
+// hand (the left for the default right hand): placed through the fingertips,
+// with the torso and legs beside the gripper's narrow side, it is the only
+// body there, and the judge sees the fingers inside it.
+TEST(PersonClearance, FreeArmHangingBesideTheTorsoIsPartOfTheTrueBody) {
+  Simulation sim;
+  sim.load();
+  test::holdStep(sim, test::readyPosture());
+  const Eigen::Isometry3d tcp = sim.tcpPose();
+  const double height = sim.options().human.height;
+  const scenario::BodyDimensions body = scenario::bodyDimensionsFromHeight(height);
+  const scenario::HangingArm arm = scenario::freeArmInTorso(body, scenario::HandSide::Right);
+  // a point of the forearm below the hip (only the legs box is beside it there)
+  const Eigen::Vector3d on_arm(arm.tip.x(), arm.tip.y(), 0.45 * height);
+  ASSERT_LT(on_arm.z(), arm.elbow.z());
+  ASSERT_GT(on_arm.z(), arm.tip.z());
+  // upright, the torso's +y (toward the free arm) along the hand's x axis (the gripper's thin side)
+  Eigen::Vector3d y = tcp.linear().col(0);
+  y.z() = 0.0;
+  ASSERT_GT(y.norm(), 0.5);
+  y.normalize();
+  if (y.x() > 0.0) y = -y;  // the trunk beyond the gripper, away from the robot's own links
+  Eigen::Matrix3d R;
+  R.col(1) = y;
+  R.col(2) = Eigen::Vector3d::UnitZ();
+  R.col(0) = R.col(1).cross(R.col(2));
+  HumanBodyPoses p = personAway();
+  p.torso = Eigen::Isometry3d::Identity();
+  p.torso.linear() = R;
+  p.torso.translation() = tcp.translation() - R * on_arm;
+  EXPECT_LT(clearanceWith(sim, p).all, -0.01);
+  // moved 20 cm away along the arm's side, nothing of the person is within 5 cm
+  p.torso.translation() -= 0.2 * y;
+  EXPECT_GT(clearanceWith(sim, p).all, 0.05);
 }
 
 }  // namespace
