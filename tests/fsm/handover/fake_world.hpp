@@ -142,6 +142,7 @@ struct World {
   Vector3 object = Vector3::Zero();
   double mass = 0.3;
   Vector3 pull = Vector3::Zero();   // force of a pulling person, while both hold
+  Vector3 inertia = Vector3::Zero();  // the held object's inertial force as the arm brakes: raw wrist force only
   double human_distance = 1.0;  // robot to the person's hand
   double arm_distance = 1.0;    // robot to the person's forearm / upper arm
   bool dropout = false;     // perception sends nothing
@@ -224,6 +225,7 @@ struct World {
     const bool robot_carries = robot_grip && !person_holds;
     Vector3 f(0, 0, -(kHandMass + (robot_carries ? mass : 0.0)) * 9.81);
     if (robot_grip && person_holds) f += pull;
+    if (robot_grip) f += inertia;  // the estimator's interaction force takes it out again
     in.wrench.head<3>() = f;
     in.load_share = robot_carries ? 1.0 : 0.0;  // what control::ContactWrenchEstimator would report
     // beyond the tool and the whole object (the estimator's interaction force): the

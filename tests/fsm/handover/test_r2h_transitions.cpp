@@ -156,6 +156,23 @@ TEST(HandoverR2H, NoPullKeepsHoldingRetreatsAndRetries) {
   EXPECT_EQ(rig.fsm->stats().retries, 1);
 }
 
+// The arm braking into the presentation with a held object loads the wrist by
+// the object's inertia; only what the person adds (the interaction force) is
+// a pull, or the robot lets go of an object no one holds.
+TEST(HandoverR2H, TheHeldObjectsOwnInertiaIsNotAPull) {
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0));
+  rig.world.moveHand(kReceive, 0.5);
+  rig.person = receiverWhoPulls(false);  // an open hand that never takes
+  ASSERT_TRUE(rig.runUntilState("Present", 10.0)) << rig.fsm->activePath();
+  rig.world.inertia = Vector3(8.0, 0.0, 0.0);  // N, above both pull thresholds
+  ASSERT_TRUE(rig.runUntilState("DetectPull", 6.0)) << rig.fsm->activePath();
+  rig.runFor(1.0);
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "DetectPull")) << rig.fsm->activePath();
+  EXPECT_EQ(rig.ctl.count("gripper 0.08"), 0);  // never opened
+  EXPECT_TRUE(rig.world.robot_grip);
+}
+
 TEST(HandoverR2H, WithdrawDuringApproachRetreatsHoldingTheObject) {
   Rig rig(true);
   ASSERT_TRUE(withdrawDuringApproach(rig)) << rig.fsm->activePath();
