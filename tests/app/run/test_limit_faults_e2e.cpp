@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "app/run/run_scenario.hpp"
@@ -53,27 +54,37 @@ app::RunSummary runText(const ScratchDir& dir, const std::string& text, const st
   return app::runScenario(sc, opt);
 }
 
-/// A tracker recording of the default scenario's person (hand still at the
-/// offer point after the reach) with one absurd hand x at t = 2 s.
-std::string recordingWithGlitch(const ScratchDir& dir, const std::string& glitch) {
+/// A tracker recording of the default scenario's person: the hand reaches
+/// the offer point in 1.2 s and stays, for `seconds` at 60 Hz; `edit(t, x, y,
+/// z)` may move the hand (m) and returns the hand-x field as written (a
+/// glitch may be any text).
+std::string reachRecording(const ScratchDir& dir, const std::string& name, double seconds,
+                           const std::function<std::string(double, double&, double&, double&)>& edit) {
   std::string csv =
       "t,hand_x,hand_y,hand_z,hand_qw,hand_qx,hand_qy,hand_qz,forearm_x,forearm_y,forearm_z,forearm_qw,forearm_qx,"
       "forearm_qy,forearm_qz,upper_arm_x,upper_arm_y,upper_arm_z,upper_arm_qw,upper_arm_qx,upper_arm_qy,upper_arm_qz\n";
   const double c = std::sqrt(0.5);
   char line[512];
-  for (int k = 0; k < 4 * 60; ++k) {
+  for (int k = 0; k < static_cast<int>(std::lround(seconds * 60)); ++k) {
     const double t = k / 60.0;
     const double u = std::min(1.0, t / 1.2);
     const double s = u * u * u * (10.0 - 15.0 * u + 6.0 * u * u);
-    const double x = 0.85 - 0.30 * s, y = 0.25 - 0.20 * s, z = 0.10 + 0.20 * s;
-    const std::string hx = k == 120 ? glitch : std::to_string(x);
+    double x = 0.85 - 0.30 * s, y = 0.25 - 0.20 * s, z = 0.10 + 0.20 * s;
+    const std::string hx = edit(t, x, y, z);
     std::snprintf(line, sizeof line, "%.17g,%s,%.17g,%.17g,1,0,0,0,%.17g,%.17g,%.17g,%.17g,0,%.17g,0,%.17g,%.17g,%.17g,%.17g,0,%.17g,0\n",
                   t, hx.c_str(), y, z, x + 0.16, y, z - 0.02, c, c, x + 0.45, y, z + 0.05, c, c);
     csv += line;
   }
-  const std::string path = dir.file("glitch.csv");
+  const std::string path = dir.file(name);
   testing::writeText(path, csv);
   return path;
+}
+
+/// The reach with one absurd hand x at t = 2 s.
+std::string recordingWithGlitch(const ScratchDir& dir, const std::string& glitch) {
+  return reachRecording(dir, "glitch.csv", 4.0, [&](double t, double& x, double&, double&) {
+    return std::abs(t - 2.0) < 1e-9 ? glitch : std::to_string(x);
+  });
 }
 
 }  // namespace
@@ -237,23 +248,12 @@ TEST(LimitFaultsEndToEnd, AHandThatJumpsIntoTheGripperMovesAsAHandCan) {
 // with the person, no position step, no QP failure.
 TEST(LimitFaultsEndToEnd, ATrackedHandThatJumpsIntoTheGripperMovesTheSimulatedPersonAsAHandCan) {
   const ScratchDir dir("tracked_jump");
-  std::string csv =
-      "t,hand_x,hand_y,hand_z,hand_qw,hand_qx,hand_qy,hand_qz,forearm_x,forearm_y,forearm_z,forearm_qw,forearm_qx,"
-      "forearm_qy,forearm_qz,upper_arm_x,upper_arm_y,upper_arm_z,upper_arm_qw,upper_arm_qx,upper_arm_qy,upper_arm_qz\n";
-  const double c = std::sqrt(0.5);
-  char line[512];
-  for (int k = 0; k < 8 * 60; ++k) {
-    const double t = k / 60.0;
-    const double u = std::min(1.0, t / 1.2);
-    const double s = u * u * u * (10.0 - 15.0 * u + 6.0 * u * u);
-    double x = 0.85 - 0.30 * s, y = 0.25 - 0.20 * s, z = 0.10 + 0.20 * s;
+  const std::string path = reachRecording(dir, "jump.csv", 8.0, [](double t, double& x, double& y, double& z) {
     if (t >= 2.4) x = 0.51, y = 0.03, z = 0.44;
-    std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%.17g,1,0,0,0,%.17g,%.17g,%.17g,%.17g,0,%.17g,0,%.17g,%.17g,%.17g,%.17g,0,%.17g,0\n",
-                  t, x, y, z, x + 0.16, y, z - 0.02, c, c, x + 0.45, y, z + 0.05, c, c);
-    csv += line;
-  }
-  const std::string path = dir.file("jump.csv");
-  testing::writeText(path, csv);
+    char hx[32];
+    std::snprintf(hx, sizeof hx, "%.17g", x);
+    return std::string(hx);
+  });
   const app::RunSummary r =
       runText(dir, defaultWith({{"duration: 12.0", "duration: 8.0"}, {"max_total_time: 10.0", "max_total_time: 8.0"}}),
               "csv:" + path);
