@@ -154,6 +154,7 @@ ControllerConfig parseControllerConfig(const YamlReader& root, const JointLimits
     }
     if (auto v = section(*s, "velocity")) {
       if (auto c = v->optionalChild("scale")) cfg.limits.velocity_scale = c->checkRange(c->asDouble(), 1e-3, 1.0);
+      if (auto c = v->optionalChild("braking")) cfg.limits.velocity_braking = c->checkRange(c->asDouble(), 0.0, 1.0);
       v->finish();
     }
     if (auto a = section(*s, "acceleration")) {

@@ -93,6 +93,10 @@ struct ControllerConfig {
   struct Limits {
     JointPositionLimitParams position;
     double velocity_scale = 0.5;
+    /// Fraction of the datasheet acceleration a joint may brake with to stop
+    /// before its position limit: its speed toward the limit is capped so it
+    /// can (JointVelocityLimit; 0 = no cap, the position damper alone).
+    double velocity_braking = 0.0;
     double acceleration_scale = 1.0;
     double torque_scale = 1.0;
   } limits;

@@ -74,7 +74,8 @@ ControllerRegistry ControllerRegistry::shipped() {
     return std::make_shared<JointPositionLimit>(a.model, a.config.limits.position, a.name);
   });
   r.addConstraint("joint_velocity_limit", [](const ElementArgs& a) -> std::shared_ptr<Constraint> {
-    return std::make_shared<JointVelocityLimit>(a.model, a.config.limits.velocity_scale, a.name);
+    return std::make_shared<JointVelocityLimit>(a.model, a.config.limits.velocity_scale, a.name,
+                                                a.config.limits.velocity_braking, a.config.limits.position.safety);
   });
   r.addConstraint("joint_torque_limit", [](const ElementArgs& a) -> std::shared_ptr<Constraint> {
     return std::make_shared<JointTorqueLimit>(a.model, a.config.limits.torque_scale, a.name);

@@ -25,10 +25,11 @@ struct LimitRig {
   Data data{panda()};
   std::shared_ptr<JointPositionLimit> position;
   std::shared_ptr<JointVelocityLimit> velocity;
-  explicit LimitRig(const JointPositionLimitParams& params = JointPositionLimitParams(), double vscale = 0.5) {
+  explicit LimitRig(const JointPositionLimitParams& params = JointPositionLimitParams(), double vscale = 0.5,
+                    double braking = 0.0) {
     f.addConstraint(std::make_shared<JointAccelerationLimit>(panda(), 1.0));
     position = std::make_shared<JointPositionLimit>(panda(), params);
-    velocity = std::make_shared<JointVelocityLimit>(panda(), vscale);
+    velocity = std::make_shared<JointVelocityLimit>(panda(), vscale, "joint_velocity", braking, params.safety);
     f.addConstraint(position);
     f.addConstraint(velocity);
     f.reserveProblem(p);
@@ -45,10 +46,10 @@ struct LimitRig {
 };
 
 // Pushes every joint toward one side as hard as the bounds allow.
-void ramIntoLimits(bool lower, double start_speed_fraction) {
+void ramIntoLimits(bool lower, double start_speed_fraction, double vscale = 0.5, double braking = 0.0) {
   const Model& m = panda();
   JointPositionLimitParams params;
-  LimitRig rig(params);
+  LimitRig rig(params, vscale, braking);
   const double dt = 1e-3;
   const Vector7 vlim = rig.velocity->limit();
   Vector7 q, v;
@@ -87,6 +88,37 @@ void ramIntoLimits(bool lower, double start_speed_fraction) {
 TEST(JointPositionLimit, NeverPassesLowerLimits) { ramIntoLimits(true, 1.0); }
 TEST(JointPositionLimit, NeverPassesUpperLimits) { ramIntoLimits(false, 1.0); }
 TEST(JointPositionLimit, NeverPassesFromRest) { ramIntoLimits(true, 0.0); }
+// at the datasheet speed the damper alone cannot brake in its zone (without the cap joint 2 ends
+// inside its safety distance): the braking cap slows each joint before it gets there
+TEST(JointPositionLimit, NeverPassesAtFullSpeedWithTheBrakingCap) {
+  ramIntoLimits(true, 1.0, 1.0, 0.5);
+  ramIntoLimits(false, 1.0, 1.0, 0.5);
+}
+
+TEST(JointVelocityLimit, BrakingCapIsTheSpeedThatStillStopsBeforeTheLimit) {
+  const Model& m = panda();
+  const double braking = 0.5;
+  LimitRig rig(JointPositionLimitParams(), 1.0, braking);
+  const double ds = rig.position->params().safety;
+  const double dt = 1e-3;
+  for (int i = 0; i < 7; ++i) {
+    const double range = m.q_max[i] - m.q_min[i];
+    Vector7 q = 0.5 * (m.q_min + m.q_max), v = Vector7::Zero();
+    q[i] = m.q_max[i] - ds * range - 0.05;  // 0.05 rad short of the safety distance
+    rig.bounds(q, v, dt);
+    const double cap = std::sqrt(2.0 * braking * m.a_max[i] * 0.05);
+    ASSERT_LT(cap, m.v_max[i]);
+    // reachable from rest within the acceleration limit? then the bound is the cap
+    const double ub = std::min(cap / dt, m.a_max[i]);
+    EXPECT_NEAR(rig.p.x_ub[i], ub, 1e-6) << "joint " << i + 1;
+    // away from the limit the datasheet speed is the bound
+    EXPECT_NEAR(rig.p.x_lb[i], -m.a_max[i], 1e-9) << "joint " << i + 1;
+    // moving at the cap's speed the joint must not speed up
+    v[i] = cap;
+    rig.bounds(q, v, dt);
+    EXPECT_LE(rig.p.x_ub[i], 1e-9) << "joint " << i + 1;
+  }
+}
 
 TEST(JointPositionLimit, FreeOutsideInteractionZoneAndDampedInside) {
   const Model& m = panda();
