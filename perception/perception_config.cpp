@@ -45,6 +45,23 @@ void parseGates(const YamlReader& g, GateSettings& s) {
   g.finish();
 }
 
+void parseReach(const YamlReader& r, ReachPredictorSettings& s) {
+  if (!r.isMap()) r.fail("expected a map of reach-prediction settings");
+  if (auto v = r.optionalChild("sample_period")) s.sample_period = v->checkRange(v->asDouble(), 1e-3, 0.2);
+  if (auto v = r.optionalChild("window")) s.window = v->checkRange(v->asDouble(), 0.5, 20.0);
+  if (auto v = r.optionalChild("rest_speed")) s.rest_speed = v->checkRange(v->asDouble(), 0.0, 1.0);
+  if (auto v = r.optionalChild("onset_speed")) s.onset_speed = v->checkRange(v->asDouble(), 0.0, 2.0);
+  if (s.onset_speed < s.rest_speed) r.fail("onset_speed must be at least rest_speed");
+  if (auto v = r.optionalChild("min_duration")) s.min_duration = v->checkRange(v->asDouble(), 0.05, 10.0);
+  if (auto v = r.optionalChild("max_duration")) s.max_duration = v->checkRange(v->asDouble(), 0.1, 20.0);
+  if (s.max_duration <= s.min_duration) r.fail("max_duration must exceed min_duration");
+  if (auto v = r.optionalChild("lead_start")) s.lead_start = v->checkRange(v->asDouble(), 0.0, 1.0);
+  if (auto v = r.optionalChild("lead_full")) s.lead_full = v->checkRange(v->asDouble(), 0.0, 1.0);
+  if (s.lead_full < s.lead_start) r.fail("lead_full must be at least lead_start");
+  if (auto v = r.optionalChild("max_residual")) s.max_residual = v->checkRange(v->asDouble(), 0.0, 1.0);
+  r.finish();
+}
+
 }  // namespace
 
 PerceptionConfig parsePerceptionConfig(const YamlReader& root) {
@@ -68,6 +85,7 @@ PerceptionConfig parsePerceptionConfig(const YamlReader& root) {
     e.rotation_smoothing_time = v->checkRange(v->asDouble(), 0.0, 1.0);
   if (auto v = root.optionalChild("gates")) parseGates(*v, e.gate);
   if (auto v = root.optionalChild("blend_time")) c.blend_time = v->checkRange(v->asDouble(), 0.0, 5.0);
+  if (auto v = root.optionalChild("reach_prediction")) parseReach(*v, c.reach);
   root.finish();
   return c;
 }

@@ -6,6 +6,7 @@
 
 #include "config/yaml_reader.hpp"
 #include "perception/perception_estimator.hpp"
+#include "perception/reach_predictor.hpp"
 
 namespace handover::perception {
 
@@ -14,6 +15,7 @@ struct PerceptionConfig {
   /// place in the hand stays identity: the scenario sets it).
   EstimatorSettings estimator = defaults();
   double blend_time = 0.5;  ///< s, observation-target switch blend
+  ReachPredictorSettings reach;  ///< where a reaching hand will come to rest
 
   /// The product's defaults (as config/perception.yaml ships them).
   static EstimatorSettings defaults();

@@ -31,6 +31,7 @@ CycleSettings defaultCycleSettings() {
   const perception::PerceptionConfig p = perception::loadPerceptionConfig(perception::defaultPerceptionConfigPath());
   s.estimator = p.estimator;  // staleness, motion model, prediction, gates
   s.target.blend_time = p.blend_time;
+  s.reach_prediction = p.reach;
   s.grasp_selection = control::grasp::loadGraspSelectionConfig(std::string(HANDOVER_SOURCE_DIR) +
                                                                "/config/grasp_selection.yaml");
   return s;
@@ -42,6 +43,7 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
                   settings.registry, &settings.collision),
       estimator_(settings.estimator),
       obs_target_(settings.target),
+      reach_(settings.reach_prediction),
       adapter_(controller_, obs_target_, settings.object_grasp, settings.gripper_open_width),
       contact_(controller_.model(), settings.controller.contact_wrench, settings.controller.period) {
   // the collision constraint the cycle feeds (stage 6) and queries; where
@@ -84,8 +86,11 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
 }
 
 void HandoverCycle::plan() {
+  // the reach's end from the last step's hand estimate (a fit per new sample: not in the 1 ms step)
+  const perception::HumanEstimate& h = estimate_->human;
+  if (h.valid && !h.stale) reach_.add(estimate_->time, h.hand, hand_vel_.velocity().head<3>().norm());
   if (!planning_) return;
-  planning_->update(*estimate_, control_in_.q, adapter_.payloadSet());
+  planning_->update(adapter_.anticipatingRest() ? led_ : *estimate_, control_in_.q, adapter_.payloadSet());
   machine_->plan();  // the carry request of the last step, if any
 }
 
@@ -104,6 +109,7 @@ void HandoverCycle::start(const io::ArmState& arm, bool holds_object) {
   object.mass = settings_.object.mass;
   object.com = settings_.object.com_in_tcp;
   contact_.start(object, holds_object);
+  reach_.reset();
   controller_.setPayload(contact_.payload());
 }
 
@@ -126,13 +132,21 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
     else object_vel_.update(est.human.stamp, est.object.pose);
   }
 
+  // the same estimate with the hand (and the object it holds) where the reach will end
+  led_ = est;
+  if (est.human.valid) {
+    led_.human.hand = reach_.ledPose(est.human.hand, est.human.hand);
+    if (est.object.valid && est.object.holder == perception::ObjectHolder::Person)
+      led_.object.pose = reach_.ledPose(est.human.hand, est.object.pose);
+  }
+
   // 3-4. the state machine, on this cycle's sensing and the last cycle's controller state
   adapter_.setTime(t);
   assembleInput(t, arm, est);
   machine_->step(input_);
 
   // 5. observation target
-  const perception::TargetOutput& target = obs_target_.update(t, est);
+  const perception::TargetOutput& target = obs_target_.update(t, adapter_.anticipatingRest() ? led_ : est);
   controller_.setObservationTarget(target.pose,
                                    target.valid && adapter_.observationTarget() != fsm::ObservationTarget::kNone);
 
@@ -226,6 +240,9 @@ void HandoverCycle::assembleInput(double t, const io::ArmState& arm, const perce
   in.object.age = robot_holds ? 0.0 : in.hand.age;
   in.object.stamp = robot_holds ? t : in.hand.stamp;  // sensed with the hand, or the TCP's now
   in.hand_open = robot_holds;
+  in.hand.rest_pose = led_.human.hand;
+  in.object.rest_pose = led_.object.pose;
+  in.hand.rest_known = in.object.rest_known = true;
   // the previous Controller::step's collision distances (perceived person)
   if (collision_) {
     const control::CollisionModel& cm = collision_->collisionModel();

@@ -78,6 +78,7 @@
 #include "perception/observation_target.hpp"
 #include "perception/perception_estimator.hpp"
 #include "perception/pose_source.hpp"
+#include "perception/reach_predictor.hpp"
 #include "runtime/adapter/controller_adapter.hpp"
 #include "runtime/grasp_planning.hpp"
 #include "runtime/sensed_velocity.hpp"
@@ -108,6 +109,7 @@ struct CycleSettings {
   std::shared_ptr<const YAML::Node> fsm_config;
   perception::EstimatorSettings estimator;    ///< incl. the object's pose in the person's hand
   perception::ObservationTargetSettings target;
+  perception::ReachPredictorSettings reach_prediction;  ///< where the person's reach will end
   fsm::ObjectInfo object;                     ///< mass, grasp frame in the object, CoM in the TCP when held
   control::GraspOffset object_grasp;          ///< grasp frame in the object frame, with its symmetry
   double gripper_open_width = 0.08;           ///< m, widest opening (config/fsm.yaml params.gripper)
@@ -215,6 +217,11 @@ class HandoverCycle {
   int ft_frame_ = -1;
   perception::PerceptionEstimator estimator_;
   perception::ObservationTarget obs_target_;
+  perception::ReachPredictor reach_;  ///< fed in plan(): where the person's hand will rest
+  /// This cycle's estimate with the hand and the object where the reach will
+  /// end (as far as reach_ trusts it); read instead of the estimate while
+  /// the state machine anticipates (observation target, grasp planning).
+  perception::PerceptionEstimate led_;
   ControllerAdapter adapter_;
   std::unique_ptr<fsm::HandoverFsm> machine_;
   std::unique_ptr<GraspPlanning> planning_;

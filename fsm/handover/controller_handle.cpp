@@ -132,6 +132,12 @@ void ControllerHandle::setTaskEnabled(int task, bool on) {
   change(Channel::kTaskSwitches, next);
 }
 
+void ControllerHandle::anticipateRest(bool on) {
+  ScopedCommands next = ledger_->current();
+  next.anticipate_rest = on;
+  change(Channel::kAnticipation, next);
+}
+
 void ControllerHandle::relaxHandClearance(bool relaxed) {
   ScopedCommands next = ledger_->current();
   next.hand_clearance_relaxed = relaxed;

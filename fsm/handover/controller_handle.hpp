@@ -65,6 +65,8 @@ class ControllerHandle {
   void setTrackingStiffness(double translation, double orientation);
   void clearTrackingStiffness();
   void relaxHandClearance(bool relaxed);
+  /// Targets where the person's reach will end (ControllerInterface::anticipateRest).
+  void anticipateRest(bool on);
   /// Any task by name (config/controller.yaml `tasks:`): its handle, -1 if
   /// none (compares strings: resolve once, e.g. in onStart), and a scoped
   /// on/off switch (handles 0..31; tracking and pose have their own calls above).

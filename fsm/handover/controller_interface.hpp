@@ -90,6 +90,11 @@ class ControllerInterface {
   /// the person's hand and the gripper is switched off; every other person
   /// and self-collision clearance stays. Optional (default: ignored).
   virtual void relaxHandClearance(bool relaxed) { (void)relaxed; }
+  /// The observation target (and the grasp planning) read where the person's
+  /// reaching hand will come to rest (perception/reach_predictor.hpp) instead
+  /// of where it is: the arm goes to meet the object where it will stop.
+  /// Optional (default: ignored).
+  virtual void anticipateRest(bool on) { (void)on; }
 
   // --- the observed frame (unscoped; optional: the defaults do nothing) ---
   /// Puts the observed frame (the observation task's state) at `pose`

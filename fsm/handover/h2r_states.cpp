@@ -27,13 +27,17 @@ void WaitForPerson::onStart(HandoverContext& ctx) {
 bool WaitForPerson::onRun(HandoverContext& ctx) {
   const HandoverParams& p = *ctx.params;
   const SensedBody& body = hand_ ? ctx.in.hand : ctx.in.object;
-  const Vector3 pos = body.pose.translation();
-  const bool usable = fresh(body, p.max_data_age) && p.workspace.contains(pos) && (!hand_ || ctx.in.hand_open);
+  // where the reach will end: a person bringing the object in is seen as coming before it arrives
+  const Vector3 pos = restPose(body).translation();
+  const bool coming = speedToward(p.workspace.center, body) > approach_speed_;
+  // a reach toward the robot starts the approach at once, as a person receiving starts to move
+  // with the giver; a body at rest must be within the workspace
+  const bool usable = fresh(body, p.max_data_age) && (coming || p.workspace.contains(pos)) && (!hand_ || ctx.in.hand_open);
   if (!usable) {
     settled_since_ = -1.0;
     return false;
   }
-  bool ready = speedToward(p.workspace.center, body) > approach_speed_;
+  bool ready = coming;
   const bool resting = (pos - p.workspace.center).norm() <= p.reach_radius &&
                        body.velocity.head<3>().norm() < settle_speed_;
   if (!resting) {
@@ -57,6 +61,7 @@ void Approach::configure(const YamlReader& def) {
 
 void Approach::onStart(HandoverContext& ctx) {
   blind_ = false;
+  ctrl().anticipateRest(true);  // meet the body where the person's reach will end
   trackedChoice(ctx, hand_).adopt(latestPlan(ctx, hand_));
   trackTarget(ctx, ctrl(), hand_, standoff_);
   if (!hand_) ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
@@ -75,7 +80,8 @@ bool Approach::onRun(HandoverContext& ctx) {
   blind_ = blind;
   if (!blind) {
     followPlan(ctx, ctrl(), hand_, standoff_);  // the best reachable target as the person moves
-    setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow, body.velocity.head<3>().norm());
+    // the gains follow the target's speed: where the reach ends stands still once it is known
+    setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow, ctx.in.target_velocity.head<3>().norm());
   }
   if (withdrawn(ctx, body)) {
     setOutput(withdrawn_);

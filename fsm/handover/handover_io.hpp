@@ -16,7 +16,15 @@ struct SensedBody {
   bool valid = false;                    ///< a sample has been received and is usable
   double age = 1e9;                      ///< s since the last sample (stale data grows this)
   double stamp = -1.0;                   ///< s, measurement time of the latest sample (-1: none); a new sample changes it
+  /// Where the body will come to rest: the end of the person's reach as far as it is
+  /// predicted (perception/reach_predictor.hpp), `pose` when no reach is under way;
+  /// only when `rest_known` (restPose()).
+  Isometry rest_pose = Isometry::Identity();
+  bool rest_known = false;
 };
+
+/// Where `b` will come to rest, as far as known (else where it is).
+inline const Isometry& restPose(const SensedBody& b) { return b.rest_known ? b.rest_pose : b.pose; }
 
 struct HandoverInput {
   double time = 0.0;  ///< s since the start of the run

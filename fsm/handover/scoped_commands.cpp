@@ -58,6 +58,9 @@ void sendGains(ControllerInterface& ctl, const H& t, const ScopedCommands& v) { 
 void sendHandClearance(ControllerInterface& ctl, const H&, const ScopedCommands& v) {
   ctl.relaxHandClearance(v.hand_clearance_relaxed);
 }
+void sendAnticipation(ControllerInterface& ctl, const H&, const ScopedCommands& v) {
+  ctl.anticipateRest(v.anticipate_rest);
+}
 void sendTaskSwitches(ControllerInterface& ctl, const H& t, const ScopedCommands& v) {
   for (int i = 0; i < 32; ++i) {
     if (i == t.tracking || i == t.pose) continue;  // switched by their own channels
@@ -78,6 +81,7 @@ constexpr ChannelEntry kTable[] = {
     row<&S::gains>(Channel::kGains, "gains", &sendGains),
     row<&S::hand_clearance_relaxed>(Channel::kHandClearance, "hand_clearance", &sendHandClearance),
     row<&S::task_switches>(Channel::kTaskSwitches, "task_switches", &sendTaskSwitches),
+    row<&S::anticipate_rest>(Channel::kAnticipation, "anticipate_rest", &sendAnticipation),
 };
 static_assert(sizeof(kTable) / sizeof(kTable[0]) == kNumChannels, "one row per channel");
 

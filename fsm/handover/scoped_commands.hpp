@@ -62,6 +62,7 @@ struct ScopedCommands {
   GainsCommand gains;
   bool hand_clearance_relaxed = false;
   TaskSwitches task_switches;
+  bool anticipate_rest = false;  ///< targets where the person's reach will end
 };
 
 /// Every channel compared through the table.
@@ -79,6 +80,7 @@ enum class Channel : std::uint8_t {
   kGains,
   kHandClearance,
   kTaskSwitches,
+  kAnticipation,
   kCount
 };
 constexpr std::size_t kNumChannels = static_cast<std::size_t>(Channel::kCount);

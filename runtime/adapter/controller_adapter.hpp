@@ -40,6 +40,7 @@ class ControllerAdapter : public fsm::ControllerInterface {
   void setObservationTarget(fsm::ObservationTarget target) override;
   void setSpeedScale(double scale) override;
   void relaxHandClearance(bool relaxed) override;
+  void anticipateRest(bool on) override { anticipate_ = on; }
   /// The collision constraint whose scoped rules (`when: apart | sharing`,
   /// control/collision/collision_config.hpp) follow the state machine's
   /// hand-clearance switch; none: relaxHandClearance does nothing.
@@ -63,6 +64,8 @@ class ControllerAdapter : public fsm::ControllerInterface {
   bool payloadSet() const { return payload_set_; }
   /// The state machine says the person's hand and the gripper share the object.
   bool handClearanceRelaxed() const { return hand_relaxed_; }
+  /// The state machine asks to meet the person where the reach will end.
+  bool anticipatingRest() const { return anticipate_; }
   double gripperWidth() const { return gripper_width_; }
   double gripperForce() const { return gripper_force_; }
   /// The "tracking" task is on.
@@ -83,6 +86,7 @@ class ControllerAdapter : public fsm::ControllerInterface {
   int offset_task_ = -1;           ///< the task the last offset went to (re-applied on an observation switch)
   fsm::TrackingOffset placement_;  ///< its target in the observed frame
   fsm::ObservationTarget target_kind_ = fsm::ObservationTarget::kNone;
+  bool anticipate_ = false;
   double now_ = 0.0;
   bool payload_set_ = false;
   double open_width_;  ///< m, the gripper's widest opening (commands are clamped to it)

@@ -34,6 +34,7 @@ struct RecordingController : ControllerInterface {
   bool gains_active = false;     // values only (not in `calls`)
   double gains_translation = 0.0, gains_orientation = 0.0;  // 1/s^2, when gains_active
   bool hand_relaxed = false;     // values only (not in `calls`)
+  bool anticipate = false;
   double gripper_width = 0.08;
   bool payload = false;
 
@@ -103,6 +104,7 @@ struct RecordingController : ControllerInterface {
     if (record) calls.push_back("speed " + num(s));
   }
   void relaxHandClearance(bool relaxed) override { hand_relaxed = relaxed; }
+  void anticipateRest(bool on) override { anticipate = on; }
   void setGripper(double w, double) override {
     gripper_width = w;
     if (record) calls.push_back("gripper " + num(w));

@@ -149,6 +149,31 @@ TEST(HandoverH2R, ApproachStiffensAsTheObjectArrives) {
   }
 }
 
+TEST(HandoverH2R, ApproachStartsAsTheReachComesInNotOnceItArrives) {
+  // a receiver starts to move with the giver: a reach toward the robot starts the approach
+  // while the object is still outside the meeting region
+  Rig rig;
+  const HandoverParams& p = rig.fsm->params();
+  ASSERT_FALSE(p.workspace.contains(rig.world.objectPose().translation()));
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  EXPECT_FALSE(p.workspace.contains(rig.world.objectPose().translation()))
+      << "the approach waited for the object to enter the workspace";
+  EXPECT_GT((rig.world.hand - kMeet).norm(), 0.1);
+}
+
+TEST(HandoverH2R, ApproachMeetsTheReachWhereItEndsAndGraspsWhereTheObjectIs) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  EXPECT_FALSE(rig.ctl.anticipate);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  rig.runFor(0.01);
+  EXPECT_TRUE(rig.ctl.anticipate);  // the observation target is where the reach will end
+  ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
+  rig.runFor(0.01);
+  EXPECT_FALSE(rig.ctl.anticipate);  // lining up on the object itself, as sensed
+}
+
 TEST(HandoverH2R, GivesUpAfterMaxRetries) {
   Rig rig;
   const int max_retries = rig.fsm->params().max_retries;

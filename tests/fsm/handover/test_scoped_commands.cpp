@@ -29,6 +29,7 @@ ScopedCommands allChanged() {
   v.hand_clearance_relaxed = true;
   v.task_switches.mask = 1u << 3;  // a task beyond tracking, pose and posture, switched on
   v.task_switches.on = 1u << 3;
+  v.anticipate_rest = true;
   return v;
 }
 
@@ -46,6 +47,7 @@ void changeThroughHandle(ControllerHandle& h, Channel c) {
     case Channel::kGains: h.setTrackingStiffness(v.gains.translation, v.gains.orientation); break;
     case Channel::kHandClearance: h.relaxHandClearance(v.hand_clearance_relaxed); break;
     case Channel::kTaskSwitches: h.setTaskEnabled(3, true); break;
+    case Channel::kAnticipation: h.anticipateRest(v.anticipate_rest); break;
     case Channel::kCount: break;
   }
 }
