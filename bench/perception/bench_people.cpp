@@ -7,6 +7,7 @@
 #include "perception/observation_target.hpp"
 #include "perception/perception_estimator.hpp"
 #include "perception/pose_codec.hpp"
+#include "perception/reach_predictor.hpp"
 #include "perception/simulated_pose_sensor.hpp"
 #include "scenes/human/scripted_human.hpp"
 #include "scenes/scenario/scenario_parser.hpp"
@@ -64,6 +65,29 @@ static void BM_EstimatorAndTarget(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_EstimatorAndTarget);
+
+// One fit of the reach predictor (planning stage, once per kept sample during a reach): a
+// 1.2 s minimum-jerk reach fed up to `state.range(0)` percent of its duration, then one more sample.
+static void BM_ReachPredictorFit(benchmark::State& state) {
+  const double t0 = 0.5, T = 1.2, until = t0 + T * state.range(0) / 100.0;
+  const Eigen::Vector3d from(0.9, 0.2, 0.15), to(0.55, 0.05, 0.35);
+  const auto pose = [&](double t) {
+    Eigen::Isometry3d x = Eigen::Isometry3d::Identity();
+    x.translation() = from + perception::minimumJerkProgress((t - t0) / T) * (to - from);
+    return x;
+  };
+  const auto speed = [&](double t) { return (pose(t + 1e-4).translation() - pose(t).translation()).norm() / 1e-4; };
+  perception::ReachPredictor p;
+  for (double t = 0.0; t < until; t += 0.001) p.add(t, pose(t), speed(t));
+  for (auto _ : state) {
+    state.PauseTiming();
+    perception::ReachPredictor q = p;  // the same history each time
+    state.ResumeTiming();
+    q.add(until + 0.02, pose(until + 0.02), speed(until + 0.02));
+    benchmark::DoNotOptimize(q.prediction().end);
+  }
+}
+BENCHMARK(BM_ReachPredictorFit)->Arg(50)->Arg(90);
 
 static void BM_DecodeDatagram(benchmark::State& state) {
   perception::PoseSample s;

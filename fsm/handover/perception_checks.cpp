@@ -17,10 +17,8 @@ bool withdrawn(const HandoverContext& ctx, const SensedBody& body) {
   const HandoverParams& p = *ctx.params;
   if (body.age > p.stale_timeout) return true;
   if (!body.valid) return false;  // a short dropout: keep the last decision
-  const double toward = speedToward(p.workspace.center, body);
-  // outside the workspace where its reach will end, and not coming in
-  if (!p.workspace.contains(restPose(body).translation()) && toward <= 0.0) return true;
-  return -toward > p.withdraw_speed;
+  if (!p.workspace.contains(restPose(body).translation())) return true;  // where its reach will end
+  return -speedToward(p.workspace.center, body) > p.withdraw_speed;
 }
 
 double positionError(const Isometry& a, const Isometry& b) {

@@ -148,6 +148,7 @@ struct World {
   double human_distance = 1.0;  // robot to the person's hand
   double arm_distance = 1.0;    // robot to the person's forearm / upper arm
   bool dropout = false;     // perception sends nothing
+  bool knows_rest = false;  // perception predicts where the hand's move ends (its goal)
   double last_sample = 0.0;
   bool hand_open = true;
   bool arm_stuck = false;   // the arm cannot move (a joint at its limit, a person in the way)
@@ -242,6 +243,13 @@ struct World {
     in.object.velocity.head<3>() = person_holds ? hand_vel : tcp_vel;
     in.object.valid = !dropout;
     in.object.age = age;
+    if (knows_rest) {  // a perfect reach prediction: where the hand's move ends
+      in.hand.rest_known = in.object.rest_known = true;
+      in.hand.rest_pose = in.hand.pose;
+      in.hand.rest_pose.translation() = hand_goal;
+      in.object.rest_pose = in.object.pose;
+      if (person_holds) in.object.rest_pose.translation() += hand_goal - hand;
+    }
     in.hand_open = hand_open;
     in.hand_distance = human_distance;
     in.arm_distance = arm_distance;

@@ -149,17 +149,21 @@ TEST(HandoverH2R, ApproachStiffensAsTheObjectArrives) {
   }
 }
 
-TEST(HandoverH2R, ApproachStartsAsTheReachComesInNotOnceItArrives) {
-  // a receiver starts to move with the giver: a reach toward the robot starts the approach
-  // while the object is still outside the meeting region
-  Rig rig;
-  const HandoverParams& p = rig.fsm->params();
-  ASSERT_FALSE(p.workspace.contains(rig.world.objectPose().translation()));
-  rig.world.moveHand(kMeet, 0.5);
-  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
-  EXPECT_FALSE(p.workspace.contains(rig.world.objectPose().translation()))
-      << "the approach waited for the object to enter the workspace";
-  EXPECT_GT((rig.world.hand - kMeet).norm(), 0.1);
+TEST(HandoverH2R, ApproachStartsOnceTheReachsEndIsKnownNotOnceTheObjectArrives) {
+  // a receiver starts to move with the giver: once perception knows where the reach ends (in
+  // the workspace), the approach starts while the object is still outside it
+  for (const bool knows_rest : {false, true}) {
+    SCOPED_TRACE(knows_rest ? "rest known" : "rest unknown");
+    Rig rig;
+    const HandoverParams& p = rig.fsm->params();
+    rig.world.knows_rest = knows_rest;
+    ASSERT_FALSE(p.workspace.contains(rig.world.objectPose().translation()));
+    rig.world.moveHand(kMeet, 0.5);
+    ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+    EXPECT_EQ(p.workspace.contains(rig.world.objectPose().translation()), !knows_rest);
+    rig.runFor(0.2);  // and it is not taken for a withdrawal
+    EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Approach")) << rig.fsm->activePath();
+  }
 }
 
 TEST(HandoverH2R, ApproachMeetsTheReachWhereItEndsAndGraspsWhereTheObjectIs) {
