@@ -50,6 +50,9 @@ class GraspPlanning : public fsm::PlannerInterface {
   void update(const perception::PerceptionEstimate& estimate, const control::Vector7& q, bool robot_holds);
   /// Forgets both choices (a new object, a new run).
   void reset();
+  /// Keeps the object's choice (take) while it stays reachable
+  /// (GraspSelector::holdChoice). Real-time safe.
+  void holdObjectChoice(bool on) { object_.holdChoice(on); }
 
   const fsm::TrackingPlan& objectPlan() const { return object_plan_; }
   const fsm::TrackingPlan& handPlan() const { return hand_plan_; }

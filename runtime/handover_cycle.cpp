@@ -90,6 +90,9 @@ void HandoverCycle::plan() {
   const perception::HumanEstimate& h = estimate_->human;
   if (h.valid && !h.stale) reach_.add(estimate_->time, h.hand, hand_vel_.velocity().head<3>().norm());
   if (!planning_) return;
+  // once the reach's end is known the arm heads for one grasp there: no switching on the way
+  const perception::ReachPrediction& reach = reach_.prediction();
+  planning_->holdObjectChoice(adapter_.anticipatingRest() && (reach.lead >= 1.0 || !reach.reaching));
   planning_->update(adapter_.anticipatingRest() ? led_ : *estimate_, control_in_.q, adapter_.payloadSet());
   machine_->plan();  // the carry request of the last step, if any
 }
@@ -240,9 +243,10 @@ void HandoverCycle::assembleInput(double t, const io::ArmState& arm, const perce
   in.object.age = robot_holds ? 0.0 : in.hand.age;
   in.object.stamp = robot_holds ? t : in.hand.stamp;  // sensed with the hand, or the TCP's now
   in.hand_open = robot_holds;
-  in.hand.rest_pose = led_.human.hand;
+  // the object's end of reach (take); the receiver's hand in a give comes for the object, its
+  // reach is not anticipated (Approach, docs/state-machine.md)
   in.object.rest_pose = led_.object.pose;
-  in.hand.rest_known = in.object.rest_known = true;
+  in.object.rest_known = true;
   // the previous Controller::step's collision distances (perceived person)
   if (collision_) {
     const control::CollisionModel& cm = collision_->collisionModel();

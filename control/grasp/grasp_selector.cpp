@@ -142,7 +142,7 @@ const GraspChoice& GraspSelector::update(const Isometry& X_obj, const Vector7& q
   const int current = choice_.valid ? choice_.index : -1;
   int pick = best;
   if (current >= 0 && evaluations_[current].feasible &&
-      evaluations_[best].score.total <= evaluations_[current].score.total + config_.hysteresis) {
+      (hold_ || evaluations_[best].score.total <= evaluations_[current].score.total + config_.hysteresis)) {
     pick = current;
   }
   choice_.switched = pick != current;

@@ -66,6 +66,11 @@ class GraspSelector {
 
   /// Forgets warm starts and the current choice (a new object or a new approach).
   void reset();
+  /// While on, the current choice is kept as long as it stays feasible, whatever
+  /// the others score: once the arm has set off toward where the object will be,
+  /// a switch costs a reorientation (up to a half turn of the wrist) that no score
+  /// gain repays. Real-time safe.
+  void holdChoice(bool on) { hold_ = on; }
 
   const GraspChoice& choice() const { return choice_; }
   const std::vector<GraspCandidate>& candidates() const { return candidates_; }
@@ -90,6 +95,7 @@ class GraspSelector {
   std::vector<int> next_seed_;  ///< candidate k's next cold seed (index into seeds_)
   std::vector<Vector7> seeds_;  ///< [q_now, fixed seeds...], slot 0 rewritten each update
   int cold_cursor_ = 0;         ///< round-robin start of the cold budget
+  bool hold_ = false;
   GraspChoice choice_;
 };
 

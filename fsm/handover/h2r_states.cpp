@@ -61,7 +61,10 @@ void Approach::configure(const YamlReader& def) {
 
 void Approach::onStart(HandoverContext& ctx) {
   blind_ = false;
-  ctrl().anticipateRest(true);  // meet the body where the person's reach will end
+  // take: meet the object where the person's reach will end. Not in a give: the receiver
+  // reaches for the object, so going where their hand will stop met it halfway (seed 1: 10 gives
+  // lost, 3 gained; strikes, timeouts)
+  if (!hand_) ctrl().anticipateRest(true);
   trackedChoice(ctx, hand_).adopt(latestPlan(ctx, hand_));
   trackTarget(ctx, ctrl(), hand_, standoff_);
   if (!hand_) ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
@@ -80,8 +83,10 @@ bool Approach::onRun(HandoverContext& ctx) {
   blind_ = blind;
   if (!blind) {
     followPlan(ctx, ctrl(), hand_, standoff_);  // the best reachable target as the person moves
-    // the gains follow the target's speed: where the reach ends stands still once it is known
-    setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow, ctx.in.target_velocity.head<3>().norm());
+    // the gains follow the tracked target's speed: a take's target (where the reach ends) stands
+    // still once it is known; a give's is the receiver's hand itself
+    const double speed = (hand_ ? body.velocity : ctx.in.target_velocity).head<3>().norm();
+    setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow, speed);
   }
   if (withdrawn(ctx, body)) {
     setOutput(withdrawn_);

@@ -196,6 +196,27 @@ TEST(GraspSelector, HysteresisHoldsUnderSmallPerturbationsAndSwitchesUnderLargeO
   EXPECT_GT(smallestLimitDistance(model, c.q_grasp), 0.4);
 }
 
+TEST(GraspSelector, AHeldChoiceStaysWhileReachable) {
+  // the same top grasp and twin: the large turn that made the twin win above
+  // leaves the held choice in place (it is still reachable)
+  const Model& model = testing::panda();
+  GraspSpec top;
+  top.placement = tcpPose(model, testing::readyConfiguration());
+  GraspSelector selector(model, {top}, testing::shippedConfig());
+  const Vector7 q_now = testing::readyConfiguration();
+  const int chosen = selector.update(Isometry::Identity(), q_now).index;
+  ASSERT_GE(chosen, 0);
+  selector.holdChoice(true);
+  const GraspChoice& held = selector.update(turnedAboutApproach(top.placement, 2.3), q_now);
+  ASSERT_TRUE(held.valid);
+  EXPECT_EQ(held.index, chosen);
+  EXPECT_FALSE(held.switched);
+  EXPECT_GT(selector.evaluations()[1 - chosen].score.total, selector.evaluations()[chosen].score.total);
+  // released: the better one wins again
+  selector.holdChoice(false);
+  EXPECT_EQ(selector.update(turnedAboutApproach(top.placement, 2.3), q_now).index, 1 - chosen);
+}
+
 TEST(GraspSelector, AvoidsAnObstacleNearTheBestGraspConfiguration) {
   const Model& model = testing::panda();
   GraspSelector selector(model, {bottleSideGrasp()}, testing::shippedConfig());

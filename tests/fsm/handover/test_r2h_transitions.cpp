@@ -185,6 +185,16 @@ TEST(HandoverR2H, WithdrawDuringApproachRetreatsHoldingTheObject) {
   EXPECT_EQ(rig.fsm->stats().retries, 1);
 }
 
+TEST(HandoverR2H, TheApproachToTheReceiversHandDoesNotAnticipateItsReach) {
+  // the receiver reaches for the object: going where their hand will stop meets it halfway
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+  rig.world.moveHand(kReceive, 0.5);
+  ASSERT_TRUE(rig.runUntilState("/Approach", 5.0)) << rig.fsm->activePath();
+  rig.runFor(0.05);
+  EXPECT_FALSE(rig.ctl.anticipate);
+}
+
 TEST(HandoverR2H, ARetreatBlockedShortOfItsPoseEndsAfterItsMaxTime) {
   // the retreat pose out of reach (a joint at its limit, a person in the
   // way): the retreat still ends, as one that got there, and the robot waits
