@@ -152,13 +152,19 @@ Isometry turnedAboutApproach(const Isometry& grasp, double angle) {
   return Eigen::Translation3d(p) * Eigen::AngleAxisd(angle, grasp.linear().col(2)) * Eigen::Translation3d(-p);
 }
 
+// A top grasp at the ready pose's TCP (and its twin), selected with the shipped config.
+GraspSpec topGraspAtReady() {
+  GraspSpec top;
+  top.placement = tcpPose(testing::panda(), testing::readyConfiguration());
+  return top;
+}
+
 TEST(GraspSelector, HysteresisHoldsUnderSmallPerturbationsAndSwitchesUnderLargeOnes) {
   // a top grasp and its twin; the object turns about the approach axis, which
   // turns the wrist (joint 7) of both. At a quarter turn both need the same
   // wrist motion from the ready pose: their scores cross there.
   const Model& model = testing::panda();
-  GraspSpec top;
-  top.placement = tcpPose(model, testing::readyConfiguration());
+  const GraspSpec top = topGraspAtReady();
   GraspSelector selector(model, {top}, testing::shippedConfig());
   const Vector7 q_now = testing::readyConfiguration();
   const GraspChoice& first = selector.update(Isometry::Identity(), q_now);
@@ -199,10 +205,8 @@ TEST(GraspSelector, HysteresisHoldsUnderSmallPerturbationsAndSwitchesUnderLargeO
 TEST(GraspSelector, AHeldChoiceStaysWhileReachable) {
   // the same top grasp and twin: the large turn that made the twin win above
   // leaves the held choice in place (it is still reachable)
-  const Model& model = testing::panda();
-  GraspSpec top;
-  top.placement = tcpPose(model, testing::readyConfiguration());
-  GraspSelector selector(model, {top}, testing::shippedConfig());
+  const GraspSpec top = topGraspAtReady();
+  GraspSelector selector(testing::panda(), {top}, testing::shippedConfig());
   const Vector7 q_now = testing::readyConfiguration();
   const int chosen = selector.update(Isometry::Identity(), q_now).index;
   ASSERT_GE(chosen, 0);
