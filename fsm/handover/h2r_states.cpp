@@ -31,7 +31,7 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   // reach's end is known, before the object arrives. (Any motion toward the robot from anywhere
   // was tried: the noisy velocity of a person standing still started 33 of 300 approaches
   // that ended withdrawn at once, a retry lost each.)
-  const Vector3 pos = restPose(body).translation();
+  const Vector3 pos = (p.anticipate_reach ? restPose(body) : body.pose).translation();
   const bool usable = fresh(body, p.max_data_age) && p.workspace.contains(pos) && (!hand_ || ctx.in.hand_open);
   if (!usable) {
     settled_since_ = -1.0;
@@ -64,7 +64,7 @@ void Approach::onStart(HandoverContext& ctx) {
   // take: meet the object where the person's reach will end. Not in a give: the receiver
   // reaches for the object, so going where their hand will stop met it halfway (seed 1: 10 gives
   // lost, 3 gained; strikes, timeouts)
-  if (!hand_) ctrl().anticipateRest(true);
+  if (!hand_ && ctx.params->anticipate_reach) ctrl().anticipateRest(true);
   trackedChoice(ctx, hand_).adopt(latestPlan(ctx, hand_));
   trackTarget(ctx, ctrl(), hand_, standoff_);
   if (!hand_) ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);

@@ -71,6 +71,7 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
       p.align_tracking_orientation_stiffness = inRange(*align, "orientation_stiffness", 0.0, 1000.0);
       align->finish();
     }
+    if (auto a = t->optionalChild("anticipate_reach")) p.anticipate_reach = a->asBool();
     if (auto arrive = t->optionalChild("arrive")) {
       p.arrive_tracking_translation_stiffness = inRange(*arrive, "translation_stiffness", 0.0, 1000.0);
       p.arrive_tracking_orientation_stiffness = inRange(*arrive, "orientation_stiffness", 0.0, 1000.0);

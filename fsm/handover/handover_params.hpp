@@ -43,6 +43,11 @@ struct HandoverParams {
   double arrive_tracking_translation_stiffness = 0.0;
   double arrive_tracking_orientation_stiffness = 0.0;
   double arrive_speed = 0.0;  ///< m/s
+  /// A take's approach goes where the person's reach will end (the object's
+  /// rest pose, HandoverInput::object.rest_pose), holds its grasp choice once
+  /// that is known, and starts once it lies in the workspace. Off: where the
+  /// object is (docs/state-machine.md, "Meeting the reach where it ends").
+  bool anticipate_reach = false;
   // gripper
   double gripper_open_width = 0.08;  ///< m, commanded opening
   double gripper_close_width = 0.0;  ///< m, commanded when grasping (the object stops the fingers)

@@ -17,7 +17,8 @@ bool withdrawn(const HandoverContext& ctx, const SensedBody& body) {
   const HandoverParams& p = *ctx.params;
   if (body.age > p.stale_timeout) return true;
   if (!body.valid) return false;  // a short dropout: keep the last decision
-  if (!p.workspace.contains(restPose(body).translation())) return true;  // where its reach will end
+  // where its reach will end, when the approach anticipates it
+  if (!p.workspace.contains((p.anticipate_reach ? restPose(body) : body.pose).translation())) return true;
   return -speedToward(p.workspace.center, body) > p.withdraw_speed;
 }
 

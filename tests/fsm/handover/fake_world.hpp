@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <yaml-cpp/yaml.h>
+
 #include "fsm/handover/handover_fsm.hpp"
 
 namespace handover::fsm::test {
@@ -276,10 +278,17 @@ struct Rig {
   /// step() runs the planning stage (HandoverFsm::plan) before the machine,
   /// as runtime::HandoverCycle does; false: the test answers when it wants.
   bool plan_stage = true;
-  explicit Rig(bool robot_starts_with_object = false) {
+  /// anticipate_reach: the shipped table with params.tracking.anticipate_reach on.
+  explicit Rig(bool robot_starts_with_object = false, bool anticipate_reach = false) {
     ObjectInfo obj;
     obj.mass = world.mass;
-    fsm = HandoverFsm::fromFile(HandoverFsm::defaultConfigPath(), ctl, obj);
+    if (anticipate_reach) {
+      YAML::Node doc = YAML::LoadFile(HandoverFsm::defaultConfigPath());
+      doc["params"]["tracking"]["anticipate_reach"] = true;
+      fsm = std::make_unique<HandoverFsm>(YamlReader(doc, HandoverFsm::defaultConfigPath(), ""), ctl, obj);
+    } else {
+      fsm = HandoverFsm::fromFile(HandoverFsm::defaultConfigPath(), ctl, obj);
+    }
     if (robot_starts_with_object) {
       world.person_holds = false;
       world.robot_grip = true;

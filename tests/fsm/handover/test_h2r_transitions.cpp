@@ -154,7 +154,7 @@ TEST(HandoverH2R, ApproachStartsOnceTheReachsEndIsKnownNotOnceTheObjectArrives) 
   // the workspace), the approach starts while the object is still outside it
   for (const bool knows_rest : {false, true}) {
     SCOPED_TRACE(knows_rest ? "rest known" : "rest unknown");
-    Rig rig;
+    Rig rig(false, true);
     const HandoverParams& p = rig.fsm->params();
     rig.world.knows_rest = knows_rest;
     ASSERT_FALSE(p.workspace.contains(rig.world.objectPose().translation()));
@@ -167,7 +167,7 @@ TEST(HandoverH2R, ApproachStartsOnceTheReachsEndIsKnownNotOnceTheObjectArrives) 
 }
 
 TEST(HandoverH2R, ApproachMeetsTheReachWhereItEndsAndGraspsWhereTheObjectIs) {
-  Rig rig;
+  Rig rig(false, true);
   rig.world.moveHand(kMeet, 0.5);
   EXPECT_FALSE(rig.ctl.anticipate);
   ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
@@ -176,6 +176,16 @@ TEST(HandoverH2R, ApproachMeetsTheReachWhereItEndsAndGraspsWhereTheObjectIs) {
   ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
   rig.runFor(0.01);
   EXPECT_FALSE(rig.ctl.anticipate);  // lining up on the object itself, as sensed
+}
+
+TEST(HandoverH2R, ApproachDoesNotAnticipateUnlessConfiguredTo) {
+  Rig rig;
+  rig.world.knows_rest = true;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  EXPECT_TRUE(rig.fsm->params().workspace.contains(rig.world.objectPose().translation()));
+  rig.runFor(0.01);
+  EXPECT_FALSE(rig.ctl.anticipate);
 }
 
 TEST(HandoverH2R, GivesUpAfterMaxRetries) {

@@ -187,7 +187,7 @@ TEST(HandoverR2H, WithdrawDuringApproachRetreatsHoldingTheObject) {
 
 TEST(HandoverR2H, TheApproachToTheReceiversHandDoesNotAnticipateItsReach) {
   // the receiver reaches for the object: going where their hand will stop meets it halfway
-  Rig rig(true);
+  Rig rig(true, true);
   ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
   rig.world.moveHand(kReceive, 0.5);
   ASSERT_TRUE(rig.runUntilState("/Approach", 5.0)) << rig.fsm->activePath();
