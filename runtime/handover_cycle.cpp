@@ -69,6 +69,7 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
                  ? std::make_unique<fsm::HandoverFsm>(YamlReader(*settings.fsm_config, settings.fsm_config_path, ""),
                                                       adapter_, settings.object)
                  : fsm::HandoverFsm::fromFile(settings.fsm_config_path, adapter_, settings.object);
+  predict_reach_ = machine_->params().anticipate_reach;  // nobody reads the prediction otherwise
   if (!settings.object_grasps.empty()) {
     GraspPlanningSettings ps;
     ps.config = settings.grasp_selection;
@@ -88,7 +89,7 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
 void HandoverCycle::plan() {
   // the reach's end from the last step's hand estimate (a fit per new sample: not in the 1 ms step)
   const perception::HumanEstimate& h = estimate_->human;
-  if (h.valid && !h.stale) reach_.add(estimate_->time, h.hand, hand_vel_.velocity().head<3>().norm());
+  if (predict_reach_ && h.valid && !h.stale) reach_.add(estimate_->time, h.hand, hand_vel_.velocity().head<3>().norm());
   if (!planning_) return;
   // once the reach's end is known the arm heads for one grasp there: no switching on the way
   const perception::ReachPrediction& reach = reach_.prediction();
@@ -136,8 +137,8 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   }
 
   // the same estimate with the hand (and the object it holds) where the reach will end
-  led_ = est;
-  if (est.human.valid) {
+  if (predict_reach_) led_ = est;
+  if (predict_reach_ && est.human.valid) {
     led_.human.hand = reach_.ledPose(est.human.hand, est.human.hand);
     if (est.object.valid && est.object.holder == perception::ObjectHolder::Person)
       led_.object.pose = reach_.ledPose(est.human.hand, est.object.pose);
@@ -245,8 +246,8 @@ void HandoverCycle::assembleInput(double t, const io::ArmState& arm, const perce
   in.hand_open = robot_holds;
   // the object's end of reach (take); the receiver's hand in a give comes for the object, its
   // reach is not anticipated (Approach, docs/state-machine.md)
-  in.object.rest_pose = led_.object.pose;
-  in.object.rest_known = true;
+  in.object.rest_known = predict_reach_;
+  if (predict_reach_) in.object.rest_pose = led_.object.pose;
   // the previous Controller::step's collision distances (perceived person)
   if (collision_) {
     const control::CollisionModel& cm = collision_->collisionModel();
