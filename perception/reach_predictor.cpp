@@ -35,7 +35,6 @@ void ReachPredictor::add(double t, const Eigen::Isometry3d& pose, double speed) 
   }
   buf_[(head_ + count_) % cap] = Sample{t, pose.translation(), Eigen::Quaterniond(pose.linear())};
   ++count_;
-  pred_.latest = pose;
 
   if (rest_time_ < 0.0 || speed < settings_.rest_speed) {
     // at rest (or the first sample): the end is where the hand is

@@ -48,7 +48,6 @@ struct ReachPrediction {
   double duration = 0.0;  ///< s, fitted T
   double residual = 0.0;  ///< m, RMS of the fit
   Eigen::Isometry3d end = Eigen::Isometry3d::Identity();     ///< fitted resting pose
-  Eigen::Isometry3d latest = Eigen::Isometry3d::Identity();  ///< the latest sample's pose
 };
 
 /// The minimum-jerk phase s(u) for u in [0, 1] (clamped outside).
