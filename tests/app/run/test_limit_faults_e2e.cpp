@@ -267,4 +267,25 @@ TEST(LimitFaultsEndToEnd, ATrackedHandThatJumpsIntoTheGripperMovesTheSimulatedPe
   EXPECT_NE(r.outcome, "error") << r.error_message;
 }
 
+// Known defect (issue 16, found 2026-11-26): the same tracked jump 0.3 s into
+// the Grasp, when the hand clearance is relaxed (the hand and the gripper share
+// the object), touches the person: 2-3 contact steps (jump at 2.45 s; at 2.4 s
+// above, 0.05 s earlier, none). Enable once a jump during the sharing is kept
+// off the gripper.
+TEST(LimitFaultsEndToEnd, DISABLED_ATrackedHandThatJumpsIntoTheGripperLateInTheGraspIsNotTouched) {
+  const ScratchDir dir("tracked_jump_late");
+  const std::string path = reachRecording(dir, "jump.csv", 8.0, [](double t, double& x, double& y, double& z) {
+    if (t >= 2.45) x = 0.51, y = 0.03, z = 0.44;
+    char hx[32];
+    std::snprintf(hx, sizeof hx, "%.17g", x);
+    return std::string(hx);
+  });
+  const app::RunSummary r =
+      runText(dir, defaultWith({{"duration: 12.0", "duration: 8.0"}, {"max_total_time: 10.0", "max_total_time: 8.0"}}),
+              "csv:" + path);
+  EXPECT_EQ(r.human_contacts, 0);
+  EXPECT_EQ(r.limit_violations.position, 0);
+  EXPECT_EQ(r.qp_failures, 0);
+}
+
 }  // namespace handover
