@@ -237,6 +237,19 @@ TEST(LimitFaultsEndToEnd, AHandThatJumpsIntoTheGripperMovesAsAHandCan) {
   EXPECT_NE(r.outcome, "error") << r.error_message;
 }
 
+// The default scenario driven by a tracker recording of its person whose hand
+// jumps 0.15 m up into the gripper at `jump` s and stays there.
+app::RunSummary runTrackedJump(const ScratchDir& dir, double jump) {
+  const std::string path = reachRecording(dir, "jump.csv", 8.0, [jump](double t, double& x, double& y, double& z) {
+    if (t >= jump) x = 0.51, y = 0.03, z = 0.44;
+    char hx[32];
+    std::snprintf(hx, sizeof hx, "%.17g", x);
+    return std::string(hx);
+  });
+  return runText(dir, defaultWith({{"duration: 12.0", "duration: 8.0"}, {"max_total_time: 10.0", "max_total_time: 8.0"}}),
+                 "csv:" + path);
+}
+
 // The same jump in a tracker recording (the default person's reach, then the
 // hand 0.15 m up into the gripper from t = 2.4 s on, holding there): the
 // gates refused three samples, then the estimate followed, and the simulated
@@ -248,15 +261,7 @@ TEST(LimitFaultsEndToEnd, AHandThatJumpsIntoTheGripperMovesAsAHandCan) {
 // with the person, no position step, no QP failure.
 TEST(LimitFaultsEndToEnd, ATrackedHandThatJumpsIntoTheGripperMovesTheSimulatedPersonAsAHandCan) {
   const ScratchDir dir("tracked_jump");
-  const std::string path = reachRecording(dir, "jump.csv", 8.0, [](double t, double& x, double& y, double& z) {
-    if (t >= 2.4) x = 0.51, y = 0.03, z = 0.44;
-    char hx[32];
-    std::snprintf(hx, sizeof hx, "%.17g", x);
-    return std::string(hx);
-  });
-  const app::RunSummary r =
-      runText(dir, defaultWith({{"duration: 12.0", "duration: 8.0"}, {"max_total_time: 10.0", "max_total_time: 8.0"}}),
-              "csv:" + path);
+  const app::RunSummary r = runTrackedJump(dir, 2.4);
   ASSERT_EQ(r.person_slowed.size(), 1u);
   EXPECT_NE(r.person_slowed[0].find("tracked person moved faster than a hand can"), std::string::npos)
       << r.person_slowed[0];
@@ -274,15 +279,7 @@ TEST(LimitFaultsEndToEnd, ATrackedHandThatJumpsIntoTheGripperMovesTheSimulatedPe
 // off the gripper.
 TEST(LimitFaultsEndToEnd, DISABLED_ATrackedHandThatJumpsIntoTheGripperLateInTheGraspIsNotTouched) {
   const ScratchDir dir("tracked_jump_late");
-  const std::string path = reachRecording(dir, "jump.csv", 8.0, [](double t, double& x, double& y, double& z) {
-    if (t >= 2.45) x = 0.51, y = 0.03, z = 0.44;
-    char hx[32];
-    std::snprintf(hx, sizeof hx, "%.17g", x);
-    return std::string(hx);
-  });
-  const app::RunSummary r =
-      runText(dir, defaultWith({{"duration: 12.0", "duration: 8.0"}, {"max_total_time: 10.0", "max_total_time: 8.0"}}),
-              "csv:" + path);
+  const app::RunSummary r = runTrackedJump(dir, 2.45);
   EXPECT_EQ(r.human_contacts, 0);
   EXPECT_EQ(r.limit_violations.position, 0);
   EXPECT_EQ(r.qp_failures, 0);
