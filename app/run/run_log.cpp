@@ -47,12 +47,17 @@ RunLog::RunLog() {
   for (int k = 0; k < perception::kRejectReasons; ++k)
     columns_.push_back(std::string("rejected_") + perception::toString(static_cast<perception::RejectReason>(k)));
   columns_.push_back("guard_steps");  // steps so far whose command the limit guard changed
-  numeric_ = columns_.size() - 1;  // every column but the state name
+  // the collision pair nearest its safety distance (what holds a stalled arm back): its
+  // distance after margins minus sDist (m), and its label (the last column, text)
+  columns_.push_back("nearest_gap");
+  columns_.push_back("nearest_pair");
+  numeric_ = columns_.size() - 2;  // every column but the state name and the pair label
 }
 
 void RunLog::reserve(std::size_t rows) {
   buffer_.reserve(rows * numeric_);
   state_index_.reserve(rows);
+  label_index_.reserve(rows);
   states_.reserve(64);
 }
 
@@ -81,6 +86,7 @@ void RunLog::putPose(const Eigen::Isometry3d& pose) {
 
 void RunLog::end() {
   ++rows_;
+  if (label_index_.size() != rows_) throw std::logic_error("RunLog: row " + std::to_string(rows_) + " has no label");
   if (buffer_.size() != rows_ * numeric_) {
     throw std::logic_error("RunLog: row " + std::to_string(rows_) + " has " +
                            std::to_string(buffer_.size() - (rows_ - 1) * numeric_) + " values, expected " +
@@ -105,7 +111,8 @@ void RunLog::write(const std::string& path) const {
         out << ",nan";
       }
     }
-    out << "\n";
+    const int label = label_index_[r];
+    out << ',' << (label >= 0 && label < static_cast<int>(labels_.size()) ? labels_[label] : "") << "\n";
   }
   writeFileChecked(path, out.str());
 }

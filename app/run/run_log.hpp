@@ -22,6 +22,10 @@ class RunLog {
   void putVec(const double* v, int n) {
     for (int i = 0; i < n; ++i) buffer_.push_back(v[i]);
   }
+  /// The row's label column (the last one, `nearest_pair`): an index into
+  /// `labels` (set once before the loop), or -1 for an empty field.
+  void putLabel(int index) { label_index_.push_back(index); }
+  void setLabels(std::vector<std::string> labels) { labels_ = std::move(labels); }
   void end();
 
   const std::vector<std::string>& columns() const { return columns_; }
@@ -34,6 +38,8 @@ class RunLog {
   std::vector<double> buffer_;        // numeric columns (all but state), row-major
   std::vector<int> state_index_;      // per row
   std::vector<std::string> states_;   // distinct state names
+  std::vector<int> label_index_;      // per row, into labels_ (-1: empty)
+  std::vector<std::string> labels_;
   std::size_t rows_ = 0;
   std::size_t numeric_ = 0;
 };

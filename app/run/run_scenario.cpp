@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <memory>
 #include <stdexcept>
@@ -154,6 +155,12 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   OutcomeJudge judge(js, steps);
   RunLog log;
   log.reserve(steps / std::max(1, opt.log_every_ms) + 2);
+  if (cycle.hasCollision()) {
+    const control::CollisionModel& cm = cycle.collision().collisionModel();
+    std::vector<std::string> labels;
+    for (int k = 0; k < cm.numPairs(); ++k) labels.push_back(cm.pairLabel(k));
+    log.setLabels(std::move(labels));
+  }
 
   // output folders exist and take writes before the simulation starts
   if (!opt.out_dir.empty()) prepareOutputDir(opt.out_dir);
@@ -338,6 +345,11 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
         if (udp) rejects.add(perception::RejectReason::kMalformed, udp->malformed());
         for (long n : rejects.count) log.put(static_cast<double>(n));
         log.put(static_cast<double>(controller.guardCount()));
+        control::NearestPair nearest;
+        if (cycle.hasCollision())
+          nearest = control::nearestToSafetyDistance(cycle.collision().collisionModel(), cycle.collision().collisionData());
+        log.put(nearest.pair >= 0 ? nearest.gap : std::numeric_limits<double>::quiet_NaN());
+        log.putLabel(nearest.pair);
         log.end();
       }
 

@@ -191,4 +191,14 @@ double minPersonDistance(const CollisionModel& cm, const CollisionData& cd) {
   return m;
 }
 
+NearestPair nearestToSafetyDistance(const CollisionModel& cm, const CollisionData& cd) {
+  NearestPair n;
+  for (int k = 0; k < cm.numPairs(); ++k) {
+    if (!cd.results[k].active) continue;
+    const double gap = cd.results[k].distance - cm.pairs[k].damper.s_dist;
+    if (n.pair < 0 || gap < n.gap) n = {k, gap};
+  }
+  return n;
+}
+
 }  // namespace handover::control

@@ -35,4 +35,13 @@ void setRuleEnabled(CollisionData& cdata, int rule, bool enabled);
 /// +inf when none). Real-time safe.
 double minPersonDistance(const CollisionModel& cmodel, const CollisionData& cdata);
 
+/// The active pair nearest its safety distance: the one whose damper is
+/// closest to stopping the robot (what holds the arm back when it stalls).
+struct NearestPair {
+  int pair = -1;       ///< index into CollisionModel::pairs, -1 when no pair is active
+  double gap = 0.0;    ///< m, its distance (after margins) minus its sDist
+};
+/// Real-time safe.
+NearestPair nearestToSafetyDistance(const CollisionModel& cmodel, const CollisionData& cdata);
+
 }  // namespace handover::control

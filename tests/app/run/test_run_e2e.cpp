@@ -106,6 +106,8 @@ std::vector<std::string> documentedLogColumns() {
   for (const char* why : {"malformed", "invalid", "time", "workspace", "jump", "speed", "acceleration"})
     c.push_back(std::string("rejected_") + why);
   c.push_back("guard_steps");
+  c.push_back("nearest_gap");
+  c.push_back("nearest_pair");
   return c;
 }
 
@@ -206,6 +208,21 @@ CsvTable checkLogCsv(const RunResult& run) {
       break;
     }
   }
+  // the pair nearest its safety distance: a labelled pair with a finite gap, or neither
+  const int gap_col = t.column("nearest_gap"), pair_col = t.column("nearest_pair");
+  int labelled = 0;
+  for (std::size_t r = 0; gap_col >= 0 && pair_col >= 0 && r < t.rows.size(); ++r) {
+    const std::string& pair = t.rows[r][pair_col];
+    if (pair.empty()) {
+      EXPECT_EQ(t.rows[r][gap_col], "nan") << "row " << r + 1;
+      continue;
+    }
+    ++labelled;
+    EXPECT_NE(pair.find(": "), std::string::npos) << "row " << r + 1 << ": " << pair;  // "rule: robot - other"
+    EXPECT_NE(pair.find(" - "), std::string::npos) << "row " << r + 1 << ": " << pair;
+    EXPECT_TRUE(std::isfinite(t.number(r, "nearest_gap"))) << "row " << r + 1;
+  }
+  EXPECT_GT(labelled, 0) << "no collision pair was ever active (the table is always near the arm)";
   if (!t.rows.empty()) {
     EXPECT_NEAR(t.number(t.rows.size() - 1, "time"), run.summary.simulated_time, 0.01);
     EXPECT_EQ(leaf(t.rows.back()[1]), run.summary.states.empty() ? "" : leaf(run.summary.states.back()));
