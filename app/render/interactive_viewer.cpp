@@ -14,7 +14,6 @@ namespace handover::render {
 namespace {
 
 constexpr const char* kNoDisplay = "--view needs a display; use --video for headless runs";
-constexpr int kMaxGeoms = 4000;
 constexpr double kDoubleClickSeconds = 0.3;
 
 std::string g_glfw_error;  // last GLFW error, for messages (GLFW reports through a C callback)
@@ -63,7 +62,7 @@ ViewerWindow::ViewerWindow(const mjModel* m, const ViewerOptions& options)
   mjv_defaultOption(&option_);
   mjv_defaultScene(&scene_);
   mjr_defaultContext(&context_);
-  mjv_makeScene(m, &scene_, kMaxGeoms);
+  mjv_makeScene(m, &scene_, kSceneMaxGeoms);
   mjr_makeContext(m, &context_, mjFONTSCALE_100);
   mjr_setBuffer(mjFB_WINDOW, &context_);
   if (options.fast) {

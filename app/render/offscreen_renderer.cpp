@@ -10,7 +10,6 @@
 namespace handover::render {
 namespace {
 
-constexpr int kMaxGeoms = 4000;   // scene capacity: arm meshes + person + decorations
 constexpr int kMaxSize = 8192;    // px, far above any sensible video
 
 }  // namespace
@@ -42,7 +41,7 @@ OffscreenRenderer::OffscreenRenderer(const mjModel* m, const OffscreenOptions& o
   mjv_defaultOption(&option_);
   mjv_defaultScene(&scene_);
   mjr_defaultContext(&context_);
-  mjv_makeScene(m, &scene_, kMaxGeoms);
+  mjv_makeScene(m, &scene_, kSceneMaxGeoms);
   mjr_makeContext(tuned, &context_, mjFONTSCALE_100);
   mj_deleteModel(tuned);
 

@@ -10,6 +10,10 @@ namespace handover::render {
 /// Name of the scene's fixed camera that frames the whole handover.
 inline constexpr const char* kOverviewCamera = "overview";
 
+/// Geometry capacity of a view's abstract scene: the arm's meshes, the person
+/// and the decorations fit with room to spare.
+inline constexpr int kSceneMaxGeoms = 4000;
+
 /// A free camera that looks at the handover workspace (world frame, design
 /// notes 1: robot at the origin, person at x ~ 1 m): from the side (-y),
 /// slightly above, robot on the left, person on the right.

@@ -8,6 +8,7 @@
 #include "config/input_error.hpp"
 #include "perception/pose_codec.hpp"
 #include "perception/simulated_pose_sensor.hpp"
+#include "tests/support/temp_path.hpp"
 
 namespace fs = std::filesystem;
 using namespace handover;
@@ -33,10 +34,6 @@ std::vector<PoseSample> noisySamples() {
   return out;
 }
 
-std::string tempPath(const std::string& name) {
-  return (fs::temp_directory_path() / ("handover_csv_" + std::to_string(::getpid()) + "_" + name)).string();
-}
-
 void expectSame(const Pose& a, const Pose& b) {
   EXPECT_EQ(a.position, b.position);
   EXPECT_EQ(a.orientation.coeffs(), b.orientation.coeffs());
@@ -47,7 +44,7 @@ void expectSame(const Pose& a, const Pose& b) {
 TEST(CsvPoseSource, RoundTripIsExact) {
   const auto written = noisySamples();
   ASSERT_GT(written.size(), 50u);
-  const std::string path = tempPath("roundtrip.csv");
+  const std::string path = handover::test::uniqueTempPath("roundtrip.csv");
   writePoseCsv(path, written);
   const auto read = readPoseCsv(path);
   ASSERT_EQ(read.size(), written.size());
@@ -70,7 +67,7 @@ TEST(CsvPoseSource, RoundTripIsExact) {
 }
 
 TEST(CsvPoseSource, BadFilesNameFileAndLine) {
-  const std::string path = tempPath("bad.csv");
+  const std::string path = handover::test::uniqueTempPath("bad.csv");
   const std::string row = "0.5,0.5,0,0.3,1,0,0,0,0.7,0,0.3,1,0,0,0,0.9,0,0.5,1,0,0,0";
   auto expectBad = [&](const std::string& text, const std::string& where, const std::string& what) {
     std::ofstream(path) << text;
@@ -91,7 +88,7 @@ TEST(CsvPoseSource, BadFilesNameFileAndLine) {
   expectBad(header + "0.5,0.5,0,0.3,2,0,0,0,0.7,0,0.3,1,0,0,0,0.9,0,0.5,1,0,0,0\n", ":2:", "unit length");
   expectBad(header + row + "\n0.4" + row.substr(3) + "\n", ":3:", "goes back");
   expectBad(header + "0.5,a,0,0.3,1,0,0,0,0.7,0,0.3,1,0,0,0,0.9,0,0.5,1,0,0,0\n", ":2:", "not a number");
-  EXPECT_THROW(readPoseCsv(tempPath("absent.csv")), InputError);
+  EXPECT_THROW(readPoseCsv(handover::test::uniqueTempPath("absent.csv")), InputError);
   fs::remove(path);
 }
 
@@ -157,7 +154,7 @@ TEST(CsvPoseSource, LongestLinesWithTheObjectRoundTrip) {
     pose->orientation = q;
   }
   s.has_object = true;
-  const std::string path = tempPath("longest.csv");
+  const std::string path = handover::test::uniqueTempPath("longest.csv");
   writePoseCsv(path, {s, s});
   const auto read = readPoseCsv(path);
   ASSERT_EQ(read.size(), 2u);

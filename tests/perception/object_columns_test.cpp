@@ -8,6 +8,7 @@
 
 #include "config/input_error.hpp"
 #include "perception/csv_pose_source.hpp"
+#include "tests/support/temp_path.hpp"
 
 using namespace handover;
 using namespace handover::perception;
@@ -27,16 +28,11 @@ PoseSample sample(double t, bool with_object) {
   return s;
 }
 
-std::string tempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("handover_objcol_" + std::to_string(::getpid()) + "_" + name))
-      .string();
-}
-
 }  // namespace
 
 TEST(ObjectColumns, CsvRoundTripKeepsTheObject) {
   std::vector<PoseSample> in = {sample(0.0, true), sample(0.01, true), sample(0.02, true)};
-  const std::string path = tempPath("rt.csv");
+  const std::string path = handover::test::uniqueTempPath("rt.csv");
   writePoseCsv(path, in);
   std::ifstream f(path);
   std::string header;
@@ -54,7 +50,7 @@ TEST(ObjectColumns, CsvRoundTripKeepsTheObject) {
 }
 
 TEST(ObjectColumns, ArmOnlyFilesStayArmOnly) {
-  const std::string path = tempPath("arm.csv");
+  const std::string path = handover::test::uniqueTempPath("arm.csv");
   writePoseCsv(path, {sample(0.0, false), sample(0.01, true)});  // not every sample has it
   std::ifstream f(path);
   std::string header;
@@ -76,7 +72,7 @@ TEST(ObjectColumns, RejectsBadObjectFields) {
     EXPECT_NE(takeObjectColumns(l, ',', o), nullptr) << bad;
   }
   // a file with the object header and a short row names the line
-  const std::string path = tempPath("bad.csv");
+  const std::string path = handover::test::uniqueTempPath("bad.csv");
   std::ofstream(path) << poseCsvHeaderWithObject() << "\n" << arm << ",0.1,0.2\n";
   try {
     readPoseCsv(path);

@@ -6,11 +6,12 @@
 #include <set>
 
 #include "control/grasp/grasp_candidates.hpp"
+#include "tests/support/units.hpp"
 
 namespace handover::control::grasp {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
+using handover::test::kDeg;
 
 GraspSpec sideGraspAboutZ() {
   GraspSpec s;

@@ -9,11 +9,12 @@
 #include "control/grasp/chain_kinematics.hpp"
 #include "control/grasp/grasp_selector.hpp"
 #include "tests/control/grasp/panda_fixture.hpp"
+#include "tests/support/units.hpp"
 
 namespace handover::control::grasp {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
+using handover::test::kDeg;
 
 using testing::tcpPose;
 

@@ -7,11 +7,12 @@
 #include "control/grasp/chain_kinematics.hpp"
 #include "control/grasp/upright_placement.hpp"
 #include "tests/control/grasp/panda_fixture.hpp"
+#include "tests/support/units.hpp"
 
 namespace handover::control::grasp {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
+using handover::test::kDeg;
 
 // the held object's pose in the world at q
 Isometry objectAt(const Model& model, const Vector7& q, const HeldObject& held) {

@@ -8,14 +8,12 @@
 #include "control/so3.hpp"
 #include "control/tasks/end_effector_pose_task.hpp"
 #include "control/tasks/posture_task.hpp"
+#include "tests/support/panda_model.hpp"
 
 using namespace handover::control;
 
 namespace {
-const Model& panda() {
-  static const Model m = loadModel(std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf");
-  return m;
-}
+using handover::test::panda;
 }  // namespace
 
 TEST(PostureTask, RowsAreJointPdLaw) {

@@ -12,15 +12,13 @@
 #include "control/so3.hpp"
 #include "control/tasks/observed_object_integrator.hpp"
 #include "control/tasks/trajectory_tracking_task.hpp"
+#include "tests/support/panda_model.hpp"
 
 using namespace handover::control;
 
 namespace {
 
-const Model& panda() {
-  static const Model m = loadModel(std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf");
-  return m;
-}
+using handover::test::panda;
 
 // A motion of the arm (constant qddot) and of the observed object (constant
 // alphadot_obs), evaluated at any time t around 0.

@@ -15,7 +15,7 @@
 namespace handover::control {
 namespace {
 
-constexpr double kDt = 0.001;
+constexpr double kObserverDt = 0.001;
 
 const Model& panda() {
   static const Model m = loadModel(defaultRobotDescription(), 0.08);
@@ -31,8 +31,8 @@ struct Plant {
   void step(const Vector7& tau) {
     computeAll(panda(), data, q, v);
     const Vector7 qdd = data.M.ldlt().solve(tau + disturbance - data.h);
-    v += qdd * kDt;
-    q += v * kDt;
+    v += qdd * kObserverDt;
+    q += v * kObserverDt;
   }
 };
 
@@ -62,7 +62,7 @@ Plant disturbedPlant() {
 DisturbanceObserver unclippedObserver() {
   DisturbanceSettings s;
   s.max_torque_fraction = 1.0;
-  return DisturbanceObserver(s, panda().tau_max, kDt);
+  return DisturbanceObserver(s, panda().tau_max, kObserverDt);
 }
 
 TEST(DisturbanceObserver, RecoversATorqueTheModelDoesNotKnow) {
@@ -97,7 +97,7 @@ TEST(DisturbanceObserver, HoldsAtMostItsShareOfTheTorqueLimits) {
   plant.disturbance << 30.0, 0.0, 0.0, 0.0, 0.0, 0.0, -5.0;
   DisturbanceSettings s;
   s.max_torque_fraction = 0.1;
-  DisturbanceObserver obs(s, panda().tau_max, kDt);
+  DisturbanceObserver obs(s, panda().tau_max, kObserverDt);
   observeUnderGravityCompensation(plant, obs, 200);
   EXPECT_NEAR(obs.torque()[0], 0.1 * panda().tau_max[0], 1e-9);
   EXPECT_NEAR(obs.torque()[6], -0.1 * panda().tau_max[6], 1e-9);
@@ -125,7 +125,7 @@ double carryError(double gain, bool compensation = true) {
   ctl.setPostureTarget(goal);
   ctl.setDisturbanceFeedback(gain, true);
   for (int k = 0; k < 6000; ++k) {
-    in.time = k * kDt;
+    in.time = k * kObserverDt;
     in.q = plant.q;
     in.qd = plant.v;
     plant.step(ctl.step(in));
