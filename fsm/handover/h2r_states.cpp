@@ -15,6 +15,7 @@ void WaitForPerson::configure(const YamlReader& def) {
   approach_speed_ = readPositive(def, "approach_speed", 5.0);
   settle_speed_ = readPositive(def, "settle_speed", 5.0);
   settle_time_ = readRange(def, "settle_time", 0.0, 10.0);
+  if (def.has("home_radius")) home_radius_ = readRange(def, "home_radius", 0.0, 1.0);
 }
 
 void WaitForPerson::onStart(HandoverContext& ctx) {
@@ -38,8 +39,11 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
     return false;
   }
   bool ready = speedToward(p.workspace.center, body) > approach_speed_;
+  const bool home_known = hand_ ? ctx.home_hand_known : ctx.home_object_known;
+  const Vector3& home = hand_ ? ctx.home_hand : ctx.home_object;
+  const bool at_home = home_radius_ > 0.0 && home_known && (pos - home).norm() < home_radius_;
   const bool resting = (pos - p.workspace.center).norm() <= p.reach_radius &&
-                       body.velocity.head<3>().norm() < settle_speed_;
+                       body.velocity.head<3>().norm() < settle_speed_ && !at_home;
   if (!resting) {
     settled_since_ = -1.0;
   } else {

@@ -12,8 +12,11 @@ namespace handover::fsm {
 /// TCP still and observes the object (or hand) until it is inside the
 /// workspace and either comes toward the robot faster than approach_speed,
 /// or rests (speed < settle_speed for settle_time) within params.reach_radius.
-/// WaitForReceiver also needs HandoverInput::hand_open.
-/// Keys: approach_speed, settle_speed (m/s), settle_time (s).
+/// WaitForReceiver also needs HandoverInput::hand_open. With home_radius
+/// (m, optional; after an abort) a rest within that distance of where the
+/// body was first seen (the person's rest place, HandoverContext::home_*)
+/// is the person back at rest, not an offer: only coming toward the robot is.
+/// Keys: approach_speed, settle_speed (m/s), settle_time (s), home_radius (m).
 class WaitForPerson : public HandoverState {
  public:
   explicit WaitForPerson(bool hand);
@@ -25,6 +28,7 @@ class WaitForPerson : public HandoverState {
   bool hand_;
   int out_;
   double approach_speed_ = 0.1, settle_speed_ = 0.05, settle_time_ = 0.3;
+  double home_radius_ = 0.0;  ///< m, 0: a rest anywhere within reach counts
   double settled_since_ = -1.0;
 };
 

@@ -65,6 +65,12 @@ struct HandoverContext : Context {
   Vector3 interaction = Vector3::Zero();
   Vector3 interaction_holding = Vector3::Zero();  ///< `interaction` as presenting started (r2h pull tests)
 
+  /// Where the person's hand and the object were first seen (m, world): the
+  /// place the hand rests before it reaches and returns to when the person
+  /// gives up (set once, by HandoverFsm::step, from the first valid sample).
+  Vector3 home_hand = Vector3::Zero(), home_object = Vector3::Zero();
+  bool home_hand_known = false, home_object_known = false;
+
   /// Weight (N) added to the sensor since `baseline`, along gravity.
   double addedWeight(const Vector3& baseline) const {
     return (force.z() - baseline.z()) * params->ft_gravity_sign;

@@ -137,6 +137,15 @@ void HandoverFsm::sanitise(const HandoverInput& in) {
     bad = true;
   }
   if (bad) ++ctx_.stats.bad_input_cycles;
+  // the person's rest place: where each body was first seen
+  if (!ctx_.home_hand_known && ctx_.in.hand.valid) {
+    ctx_.home_hand = ctx_.in.hand.pose.translation();
+    ctx_.home_hand_known = true;
+  }
+  if (!ctx_.home_object_known && ctx_.in.object.valid) {
+    ctx_.home_object = ctx_.in.object.pose.translation();
+    ctx_.home_object_known = true;
+  }
   last_time_ = ctx_.in.time;
 }
 

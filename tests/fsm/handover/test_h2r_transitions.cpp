@@ -231,6 +231,35 @@ TEST(HandoverH2R, PersonWhoNeverComesBackEndsAborted) {
   EXPECT_EQ(rig.fsm->stats().retries, 1);
 }
 
+// A person who withdraws to where their hand rested before the reach (within
+// reach of the robot, so a rest there used to count as a new offer and the
+// robot went for the object again and again until the run timed out) has
+// given up: the robot waits out WaitAgain and ends aborted. Resting anywhere
+// else within reach is still an offer.
+TEST(HandoverH2R, APersonBackAtRestWhereTheyStartedIsNotOfferingAgain) {
+  const Vector3 home(0.72, 0.15, 0.15);  // within reach_radius of the workspace centre
+  for (const bool stays : {true, false}) {
+    SCOPED_TRACE(stays ? "stays at the rest place" : "then rests elsewhere within reach");
+    Rig rig;
+    rig.world.hand = rig.world.hand_goal = home;
+    rig.world.object = home + rig.world.object_in_hand;
+    rig.world.moveHand(kMeet, 0.5);
+    ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+    rig.world.moveHand(home, 0.8);  // back to where the hand rested: withdrawn
+    ASSERT_TRUE(rig.runUntilState("WaitAgain", 8.0)) << rig.fsm->activePath();
+    if (stays) {
+      ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 10.0)) << rig.fsm->activePath();
+      EXPECT_EQ(rig.leaves(),
+                (Leaves{"SelectDirection", "WaitForOffer", "Approach", "Retreat", "WaitAgain", "Aborted"}));
+      EXPECT_STREQ(rig.fsm->stats().outcome, "aborted");
+    } else {
+      // drifts 15 cm sideways, slower than an approach, and rests there
+      rig.world.moveHand(home + Vector3(0.0, -0.15, 0.0), 0.08);
+      EXPECT_TRUE(rig.runUntilState("Approach", 3.5)) << rig.fsm->activePath();
+    }
+  }
+}
+
 TEST(HandoverH2R, NoReleaseOpensAndRetreatsWithoutPayload) {
   Rig rig;
   rig.world.moveHand(kMeet, 0.5);  // the person never lets go
