@@ -94,24 +94,30 @@ TEST(HandoverCycle, StateMachineSeesThisCyclesSensingAndLastCyclesController) {
 
 TEST(HandoverCycle, SharingTheObjectSwitchesTheScopedRules) {
   // config/collision.yaml: the gripper keeps the sensor margin from the
-  // person's forearm while apart, and only the safety distance while it
-  // shares the object with the person's hand
+  // person's upper arm and the hand's clearance from the forearm while apart,
+  // and only the safety distance from either while it shares the object with
+  // the person's hand
   HandoverCycle cycle(defaultCycleSettings());
   const auto& cm = cycle.collision().collisionModel();
   const int apart = cm.ruleIndex("person_arm_gripper");
   const int sharing = cm.ruleIndex("person_arm_gripper_sharing");
+  const int forearm = cm.ruleIndex("person_forearm_gripper");
   ASSERT_GE(apart, 0);
   ASSERT_GE(sharing, 0);
+  ASSERT_GE(forearm, 0);
   EXPECT_TRUE(cycle.collision().ruleEnabled(apart));
   EXPECT_FALSE(cycle.collision().ruleEnabled(sharing));
+  EXPECT_TRUE(cycle.collision().ruleEnabled(forearm));
   ControllerAdapter& adapter = cycle.adapter();
   adapter.relaxHandClearance(true);
   EXPECT_FALSE(cycle.collision().ruleEnabled(apart));
   EXPECT_TRUE(cycle.collision().ruleEnabled(sharing));
+  EXPECT_FALSE(cycle.collision().ruleEnabled(forearm));
   EXPECT_FALSE(cycle.collision().ruleEnabled(cycle.handGripperRule()));
   adapter.relaxHandClearance(false);
   EXPECT_TRUE(cycle.collision().ruleEnabled(apart));
   EXPECT_FALSE(cycle.collision().ruleEnabled(sharing));
+  EXPECT_TRUE(cycle.collision().ruleEnabled(forearm));
   EXPECT_TRUE(cycle.collision().ruleEnabled(cycle.handGripperRule()));
 }
 
