@@ -208,7 +208,12 @@ const Vector7& Controller::step(const ControlInputs& in) {
   return tau_;
 }
 
-void Controller::guardCommand() { guard_.apply(data_, tau_external_, qdd_, tau_); }
+void Controller::guardCommand() {
+  // the last period's disturbance beyond what the dynamics already hold: the
+  // guard predicts the arm's next velocity with it (limit_guard.hpp)
+  unmodelled_.noalias() = disturbance_.latest() - tau_external_;
+  guard_.apply(data_, tau_external_, qdd_, tau_, unmodelled_);
+}
 
 void Controller::fallback(const char* why) {
   fell_back_ = true;

@@ -16,7 +16,13 @@
 // the last two being the largest speed from which, after moving for one more
 // period, braking at a_b stops the joint before the guarded limit (0 at or
 // beyond it: the joint does not go further; the QP's damper brings it back).
-// That is a box lo <= qdd <= hi. The commanded qdd is clamped into it, and
+// That is a box lo <= qdd <= hi on the arm's acceleration. A torque the
+// model misses (tau_unmodelled: the controller passes the last period's
+// disturbance, DisturbanceObserver::latest, beyond what its dynamics hold)
+// adds M^-1 tau_unmodelled to whatever is commanded, so the box on the
+// command is shifted by that much: a person pressing on the gripper or the
+// held object cannot turn a light wrist joint past its limit while the
+// commands stay small. The commanded qdd is clamped into it, and
 // tau = M qdd + h - tau_ext must then lie within +-torque_scale * tau_max:
 // if not, the guard solves the small projection
 //   min |qdd - qdd_box|^2  s.t.  lo <= qdd <= hi,  |M qdd + h - tau_ext| <= tau_lim
@@ -73,7 +79,8 @@ class LimitGuard {
   /// (N m, always recomputed from qdd). Returns true when the command changed.
   /// Non-finite qdd entries count as a change and are replaced by the braking
   /// law's nearest admissible value. RT safe.
-  bool apply(const Data& data, const Vector7& tau_external, Vector7& qdd, Vector7& tau);
+  bool apply(const Data& data, const Vector7& tau_external, Vector7& qdd, Vector7& tau,
+             const Vector7& tau_unmodelled = Vector7::Zero());
 
   /// Steps where apply() changed the command since reset().
   long changedCount() const { return changed_count_; }

@@ -7,10 +7,12 @@ namespace handover::control {
 DisturbanceObserver::DisturbanceObserver(const DisturbanceSettings& settings, const Vector7& tau_max, double period)
     : period_(period),
       alpha_(settings.filter_tau > 0.0 ? 1.0 - std::exp(-period / settings.filter_tau) : 1.0),
-      limit_(settings.max_torque_fraction * tau_max) {}
+      limit_(settings.max_torque_fraction * tau_max),
+      tau_max_(tau_max) {}
 
 void DisturbanceObserver::reset() {
   estimate_.setZero();
+  latest_.setZero();
   qd_prev_.setZero();
   have_prev_ = false;
 }
@@ -24,10 +26,11 @@ void DisturbanceObserver::update(const Data& data, const Vector7& qd, const Vect
   }
   const Vector7 qdd = (qd - qd_prev_) / period_;
   qd_prev_ = qd;
-  if (!learn) return;
   Vector7 d = data.M * qdd;
   d += data.h - tau_applied;
   if (!d.allFinite()) return;
+  latest_ = d.cwiseMax(-tau_max_).cwiseMin(tau_max_);
+  if (!learn) return;
   estimate_ += alpha_ * (d - estimate_);
   estimate_ = estimate_.cwiseMax(-limit_).cwiseMin(limit_);
 }

@@ -52,12 +52,18 @@ class DisturbanceObserver {
 
   /// The filtered, clipped disturbance torque (external, like J^T f), N m.
   const Vector7& torque() const { return estimate_; }
+  /// The last period's disturbance, unfiltered and whether learning or not,
+  /// clipped to the torque limits (0 before two updates): what acted on the
+  /// arm a moment ago, for a one-period prediction (the limit guard), N m.
+  const Vector7& latest() const { return latest_; }
 
  private:
   double period_;
   double alpha_;   ///< filter gain per update
   Vector7 limit_;
   Vector7 estimate_ = Vector7::Zero();
+  Vector7 latest_ = Vector7::Zero();
+  Vector7 tau_max_ = Vector7::Zero();
   Vector7 qd_prev_ = Vector7::Zero();
   bool have_prev_ = false;
 };
