@@ -211,8 +211,8 @@ const Vector7& Controller::step(const ControlInputs& in) {
 void Controller::guardCommand() {
   // the last period's disturbance beyond what the dynamics already hold: the
   // guard predicts the arm's next velocity with it (limit_guard.hpp)
-  unmodelled_.noalias() = disturbance_.latest() - tau_external_;
-  guard_.apply(data_, tau_external_, qdd_, tau_, unmodelled_);
+  const Vector7 unmodelled = disturbance_.latest() - tau_external_;
+  guard_.apply(data_, tau_external_, qdd_, tau_, unmodelled);
 }
 
 void Controller::fallback(const char* why) {

@@ -209,7 +209,6 @@ class Controller {
   int ft_id_ = 0;
   Vector6 external_wrench_ = Vector6::Zero();
   Vector7 tau_external_ = Vector7::Zero();
-  Vector7 unmodelled_ = Vector7::Zero();  ///< N m, the last period's disturbance the dynamics miss (limit guard)
   DisturbanceObserver disturbance_;
   double disturbance_gain_ = 0.0;
   bool disturbance_learn_ = true;

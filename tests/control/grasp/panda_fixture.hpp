@@ -8,13 +8,11 @@
 #include "control/grasp/chain_kinematics.hpp"
 #include "control/grasp/grasp_selection_config.hpp"
 #include "control/model/model.hpp"
+#include "tests/support/panda_model.hpp"
 
 namespace handover::control::grasp::testing {
 
-inline const Model& panda() {
-  static const Model model = loadModel(std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf");
-  return model;
-}
+using handover::test::panda;
 
 /// Uniform in [q_min + inset, q_max - inset] (rad).
 inline Vector7 randomConfiguration(const Model& model, std::mt19937& rng, double inset = 0.0) {

@@ -14,16 +14,14 @@
 #include "config/input_error.hpp"
 #include "control/controller_config.hpp"
 #include "control/safety/limit_guard.hpp"
+#include "tests/support/panda_model.hpp"
 #include "tests/support/temp_path.hpp"
 
 using namespace handover::control;
 
 namespace {
 
-const Model& panda() {
-  static const Model m = loadModel(std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf");
-  return m;
-}
+using handover::test::panda;
 
 constexpr double kDt = 1e-3;
 
