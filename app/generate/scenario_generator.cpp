@@ -109,6 +109,13 @@ double support(const ObjectDraw& o, const Vector3d& d) {
   return 0.5 * o.size[1] * std::abs(d.z()) + o.size[0] * std::hypot(d.x(), d.y());
 }
 
+// radius of the smallest sphere about the object's centre that holds it
+double circumradius(const ObjectDraw& o) {
+  if (o.shape == "sphere") return o.size[0];
+  if (o.shape == "box") return 0.5 * std::sqrt(o.size[0] * o.size[0] + o.size[1] * o.size[1] + o.size[2] * o.size[2]);
+  return std::hypot(o.size[0], 0.5 * o.size[1]);
+}
+
 Matrix3d graspRotation(const std::string& family) {
   // grasp z = approach, y = finger closing; about the object's y axis
   const double pitch = family == "top" ? kPi : family == "angled" ? 0.75 * kPi : 0.5 * kPi;
@@ -322,16 +329,21 @@ std::string drawText(Rng& rng, std::uint64_t seed, int index, bool take, std::st
   const Vector2d rest_xy = person.stand + 0.18 * facing + 0.22 * outward;
   Vector3d rest(rest_xy.x(), rest_xy.y(), 0.50 * person.height + scenario::kFloorZ);
   if (insideTable(rest)) rest.z() = std::max(rest.z(), 0.15);
+  // the object the resting hand holds (take: before the reach; give: after
+  // the withdraw) stays 3 cm above the table's height: the straight reach
+  // between rest and handover would otherwise sweep it through the table's
+  // edge or top
+  double lowest = 0.0;
   if (take) {
-    // the object in the resting hand hangs where it hangs at the handover,
-    // shifted: keep it 3 cm above the table wherever it overhangs the table
+    // it hangs where it hangs at the handover, shifted
     const Vector3d centre = at.object_pos + (rest - at.grip);
-    const Matrix3d& R = at.object;
-    const double lowest = centre.z() - support(o, R.transpose() * Vector3d::UnitZ());
-    const double ex = support(o, R.transpose() * Vector3d::UnitX()), ey = support(o, R.transpose() * Vector3d::UnitY());
-    const bool over_table = centre.x() - ex < 0.75 && centre.x() + ex > -0.35 && std::abs(centre.y()) - ey < 0.5;
-    if (over_table && lowest < 0.03) rest.z() += 0.03 - lowest;
+    lowest = centre.z() - support(o, at.object.transpose() * Vector3d::UnitZ());
+  } else {
+    // held where the robot put it: it rests in or on the hand, its centre at
+    // or above the grip point (4-5 cm above in the benchmark's gives)
+    lowest = rest.z() - circumradius(o);
   }
+  if (lowest < 0.03) rest.z() += 0.03 - lowest;
 
   // how the person moves
   Script s;

@@ -29,10 +29,13 @@ void OutcomeJudge::observe(const StepFacts& f) {
   in_contact_ = touching;
   min_dist_ = std::min(min_dist_, f.min_human_distance);
 
-  // drops: touching table/floor, or falling with nobody holding it
+  // drops: touching table/floor, or falling with nobody holding it. An object
+  // the person holds may touch the table: where a person sets it down is
+  // theirs to choose (a held object the robot strikes on the table counts)
   const bool nobody_holds = !f.hand_holds_object && !robot_holds;
   const bool fell = nobody_holds && f.object_vel.z() < -s_.fall_speed;
-  if (!dropped_ && (f.object_on_table || f.object_on_floor || fell)) {
+  const bool down = (f.object_on_table || f.object_on_floor) && !f.hand_holds_object;
+  if (!dropped_ && (down || fell)) {
     dropped_ = true;
     drop_time_ = f.time;
     drop_reason_ = f.object_on_table ? "table" : f.object_on_floor ? "floor" : "fell";

@@ -111,6 +111,37 @@ TEST(OutcomeJudge, ObjectOnTableIsDrop) {
   EXPECT_EQ(clean.drop_reason, "");
 }
 
+// A receiver who rests the object on the table after the exchange, or a giver
+// whose object grazes the table while they still hold it, has not dropped it
+// (6 gives of the generated benchmark were judged object_drop that way).
+TEST(OutcomeJudge, AnObjectOnTheTableInThePersonsHandIsNotADrop) {
+  JudgeSettings js;
+  js.mode = "robot_to_human";
+  OutcomeJudge judge(js);
+  for (int i = 0; i <= 1000; ++i) {
+    StepFacts f;
+    f.time = i * 1e-3;
+    const bool given = f.time > 0.3;
+    f.hand_holds_object = given;
+    f.left_finger_on_object = f.right_finger_on_object = !given;
+    f.object_on_table = f.time > 0.8;  // the person sets it down
+    judge.observe(f);
+  }
+  const RunSummary r = judge.finish(true, "success", 1, 0, 0, 1.0);
+  EXPECT_FALSE(r.object_dropped);
+  EXPECT_EQ(r.outcome, "success");
+
+  // the same table contact with nobody holding it is a drop
+  OutcomeJudge loose(js);
+  for (int i = 0; i <= 1000; ++i) {
+    StepFacts f;
+    f.time = i * 1e-3;
+    f.object_on_table = f.time > 0.8;
+    loose.observe(f);
+  }
+  EXPECT_TRUE(loose.finish(true, "success", 1, 0, 0, 1.0).object_dropped);
+}
+
 TEST(OutcomeJudge, QpFailureIsUnsafe) {
   Script sc;
   sc.qp_fail = true;
