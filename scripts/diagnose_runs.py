@@ -15,7 +15,10 @@ Mechanisms are read from log.csv columns (docs/outputs.md), not guessed:
 - stalled: the same distance without a joint at its limit (another
   constraint or the task weights hold it);
 - QP infeasible: steps with qp_status != 0, and the state they fell in;
-- dropped after the grasp: the object sank > 5 cm while the fingers were closed;
+- dropped after the grasp (a take): the object sank > 5 cm while the fingers
+  were closed;
+- touched the person: the onsets of `person_contact`, their state and the
+  collision pair nearest its safety distance at that moment;
 - never reached / retreated: the state sequence shows Retreat or WaitAgain
   before any grasp.
 Python standard library only.
@@ -94,9 +97,18 @@ def diagnose(summary, rows):
         else:
             findings.append("stalled in %s for %.1f s: TCP %.0f mm from its target (joints clear, nearest %d at %.2f rad)"
                             % (name, span, 1e3 * err, j, m))
-    # the object sinking in the gripper
+    # touches of the person: when, in which state, and the collision pair then nearest its safety distance
+    onsets = [i for i, r in enumerate(rows) if fl(r, "person_contact") > 0.5 and (i == 0 or fl(rows[i - 1], "person_contact") < 0.5)]
+    for i in onsets[:3]:
+        r = rows[i]
+        n = 1
+        while i + n < len(rows) and fl(rows[i + n], "person_contact") > 0.5:
+            n += 1
+        findings.append("touched the person at %.2f s in %s for %.2f s (nearest pair: %s)"
+                        % (fl(r, "time"), short(r["state"]), n * dt, r.get("nearest_pair") or "none"))
+    # the object sinking in the gripper (a take: the fingers closed on what the person gave)
     closed = [i for i, r in enumerate(rows) if fl(r, "gripper_cmd") < 0.07 and fl(r, "finger_width") < 0.075]
-    if closed:
+    if closed and summary.get("mode") == "human_to_robot":
         z0 = fl(rows[closed[0]], "object_z")
         zmin = min(fl(rows[i], "object_z") for i in closed)
         if z0 - zmin > 0.05:

@@ -47,6 +47,7 @@ RunLog::RunLog() {
   for (int k = 0; k < perception::kRejectReasons; ++k)
     columns_.push_back(std::string("rejected_") + perception::toString(static_cast<perception::RejectReason>(k)));
   columns_.push_back("guard_steps");  // steps so far whose command the limit guard changed
+  columns_.push_back("person_contact");  // 1: the robot touches the person (the judge's contact, true geometry)
   // the collision pair nearest its safety distance (what holds a stalled arm back): its
   // distance after margins minus sDist (m), and its label (the last column, text)
   columns_.push_back("nearest_gap");

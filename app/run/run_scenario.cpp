@@ -345,6 +345,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
         if (udp) rejects.add(perception::RejectReason::kMalformed, udp->malformed());
         for (long n : rejects.count) log.put(static_cast<double>(n));
         log.put(static_cast<double>(controller.guardCount()));
+        log.put(f.robot_human_contacts > 0 || f.human_penetration ? 1.0 : 0.0);
         control::NearestPair nearest;
         if (cycle.hasCollision())
           nearest = control::nearestToSafetyDistance(cycle.collision().collisionModel(), cycle.collision().collisionData());

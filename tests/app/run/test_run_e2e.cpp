@@ -106,6 +106,7 @@ std::vector<std::string> documentedLogColumns() {
   for (const char* why : {"malformed", "invalid", "time", "workspace", "jump", "speed", "acceleration"})
     c.push_back(std::string("rejected_") + why);
   c.push_back("guard_steps");
+  c.push_back("person_contact");
   c.push_back("nearest_gap");
   c.push_back("nearest_pair");
   return c;
@@ -223,6 +224,14 @@ CsvTable checkLogCsv(const RunResult& run) {
     EXPECT_TRUE(std::isfinite(t.number(r, "nearest_gap"))) << "row " << r + 1;
   }
   EXPECT_GT(labelled, 0) << "no collision pair was ever active (the table is always near the arm)";
+  // a touch of the person shows in the rows; a run without contacts shows none
+  int touching_rows = 0;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const double c = t.number(r, "person_contact");
+    EXPECT_TRUE(c == 0.0 || c == 1.0) << "row " << r + 1;
+    touching_rows += c > 0.5 ? 1 : 0;
+  }
+  if (run.summary.human_contacts == 0) EXPECT_EQ(touching_rows, 0);
   if (!t.rows.empty()) {
     EXPECT_NEAR(t.number(t.rows.size() - 1, "time"), run.summary.simulated_time, 0.01);
     EXPECT_EQ(leaf(t.rows.back()[1]), run.summary.states.empty() ? "" : leaf(run.summary.states.back()));
