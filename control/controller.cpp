@@ -146,8 +146,10 @@ void Controller::reset(const ControlInputs& in) {
   iterations_ = 0;
   fell_back_ = false;
   relaxed_ = false;
+  unslowed_ = false;
   slack_ = 0.0;
   relaxed_count_ = 0;
+  unslowed_count_ = 0;
   fallback_count_ = 0;
   fallback_streak_ = 0;
 }
@@ -187,6 +189,22 @@ const Vector7& Controller::step(const ControlInputs& in) {
 
   status_ = solver_->solve(problem_, x_);
   iterations_ = solver_->result().iterations;
+  if (status_ == QpStatus::kInfeasible && velocity_limit_ && velocity_limit_->speedScale() < 1.0) {
+    // the slow-down yields to the other rows: an arm slowed near a person who
+    // moves in faster than it may move could not give way (a receiver's hand
+    // reaching at 1 m/s struck the held gripper while the joints crept at
+    // 15 % of their limit); the slow-down is for the arm's own motion
+    const double slowed = velocity_limit_->speedScale();
+    velocity_limit_->setSpeedScale(1.0);
+    formulation_.build(ctx, problem_);
+    status_ = solver_->solve(problem_, x_);
+    iterations_ += solver_->result().iterations;
+    velocity_limit_->setSpeedScale(slowed);
+    if (status_ == QpStatus::kOptimal) {
+      unslowed_ = true;
+      ++unslowed_count_;
+    }
+  }
   if (status_ == QpStatus::kInfeasible && config_.qp.relax_soft_rows && problem_.hasSoftRows()) {
     const QpStatus relaxed = relaxation_.solve(problem_, *solver_, x_);
     iterations_ += relaxation_.iterations();

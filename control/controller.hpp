@@ -19,7 +19,11 @@
 // only the regularisation would stop them from moving the observed object.
 // Any task is addressed by its name through generic handles (taskIndex,
 // then setTaskEnabled / setTaskTarget / setTaskGains / setTaskOffset), which
-// is how the state machine reaches it (runtime/adapter). When the rows cannot all hold and some are soft (collision),
+// is how the state machine reaches it (runtime/adapter). A speed scale below 1
+// (setSpeedScale: the slow-down near a person) gives way first: when the rows
+// cannot all hold under it, the QP is solved again at the full velocity
+// limits (counted: unslowedCount), so a person moving in faster than the
+// slowed arm may move is still escaped. When the rows cannot all hold and some are soft (collision),
 // they are relaxed by the least common amount and the QP solved again
 // (SoftRowRelaxation; counted: relaxedCount, lastSlack) - the arm keeps
 // within its own limits and escapes as well as they allow. If the QP still
@@ -162,6 +166,10 @@ class Controller {
   double lastSlack() const { return slack_; }
   /// Steps solved with relaxed soft rows since reset().
   long relaxedCount() const { return relaxed_count_; }
+  /// Whether the last step's QP was solved only at the full velocity limits
+  /// (the speed scale lifted), and how many steps were since reset().
+  bool lastStepUnslowed() const { return unslowed_; }
+  long unslowedCount() const { return unslowed_count_; }
   long fallbackCount() const { return fallback_count_; }
   /// Consecutive fallback steps up to the last one (0 after a solved step):
   /// an application logs a fallback when this is 1 (and now and then after).
@@ -239,8 +247,10 @@ class Controller {
   int iterations_ = 0;
   bool fell_back_ = false;
   bool relaxed_ = false;
+  bool unslowed_ = false;
   double slack_ = 0.0;
   long relaxed_count_ = 0;
+  long unslowed_count_ = 0;
   long fallback_count_ = 0;
   long fallback_streak_ = 0;
   const char* fallback_reason_ = "";

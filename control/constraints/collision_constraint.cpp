@@ -16,7 +16,8 @@ CollisionConstraint::CollisionConstraint(const Model& model, const CollisionConf
       cdata_(cmodel_),
       dampers_(cmodel_.pairs.size()),
       max_escape_(config.max_escape_acceleration),
-      reach_fraction_(config.escape_reach_fraction) {}
+      reach_fraction_(config.escape_reach_fraction),
+      broadphase_(config.broadphase_margin) {}
 
 void CollisionConstraint::setRuleEnabled(int rule, bool enabled) {
   control::setRuleEnabled(cdata_, rule, enabled);
@@ -39,21 +40,32 @@ int CollisionConstraint::compute(const ControlContext& ctx, Eigen::Ref<Eigen::Ma
     const PairResult& r = cdata_.results[k];
     const DamperSettings& s = cmodel_.pairs[k].damper;
     DamperState& st = dampers_[k];
-    if (!r.active || r.distance >= s.i_dist) {
+    if (!r.active) {
       st = DamperState{};
       continue;
     }
     if (!st.inside) {
+      // a pair closing fast engages early enough for the arm to give way at
+      // max_escape (a damper entered at d slows the approach linearly to 0 at
+      // sDist: it demands v^2 / (d - sDist) at entry), as far out as the
+      // broad phase computes pairs
+      const double closing = std::max(0.0, -r.d_dot);
+      const double engage = std::clamp(s.s_dist + closing * closing / max_escape_, s.i_dist, s.i_dist + broadphase_);
+      if (r.distance >= engage) continue;
       // entering: automatic damping accepts the current approach speed
       st.inside = true;
+      st.i_dist = engage;
       if (s.automatic) {
         st.xi = s.damping_offset;
         if (r.d_dot < 0.0 && r.distance > s.s_dist)
-          st.xi += -r.d_dot * (s.i_dist - s.s_dist) / (r.distance - s.s_dist);
+          st.xi += -r.d_dot * (engage - s.s_dist) / (r.distance - s.s_dist);
       }
+    } else if (r.distance >= st.i_dist) {
+      st = DamperState{};
+      continue;
     }
     if (!s.automatic) st.xi = s.damping;
-    st.bound = -st.xi * (r.distance - s.s_dist) / (s.i_dist - s.s_dist);
+    st.bound = -st.xi * (r.distance - s.s_dist) / (st.i_dist - s.s_dist);
 
     C.row(rows).setZero();
     C.row(rows).segment<kArmDofs>(VariableLayout::kQdd) = r.jacobian;
@@ -63,7 +75,9 @@ int CollisionConstraint::compute(const ControlContext& ctx, Eigen::Ref<Eigen::Ma
     // every joint at its acceleration limit (a row through a near-singular
     // direction or a point near the base cannot do much)
     const double reach = r.jacobian.cwiseAbs().dot(ctx.model->a_max.transpose());
-    const double demand = damperLowerBound(r.distance, r.d_dot, r.drift, st.xi, s, ctx.dt) + r.drift;
+    DamperSettings engaged = s;
+    engaged.i_dist = st.i_dist;
+    const double demand = damperLowerBound(r.distance, r.d_dot, r.drift, st.xi, engaged, ctx.dt) + r.drift;
     lb[rows] = std::min(demand, std::min(max_escape_, reach_fraction_ * reach)) - r.drift;
     ub[rows] = inf;
     ++rows;

@@ -9,7 +9,10 @@
 // The bound reaches 0 at d = sDist, so d never falls below sDist.
 // Automatic damping (default): when a pair enters iDist, xi is chosen so the
 // current d_dot is admissible, plus an offset; it stays until the pair leaves.
-// Pairs with d >= iDist give no row.
+// A pair closing faster than the arm can give way within iDist (a person's
+// hand reaching at 1 m/s) engages earlier: at sDist + d_dot^2 / max_escape,
+// at most iDist + broadphase_margin; that distance then serves as its iDist
+// until it leaves. Pairs not engaged give no row.
 //
 // Build: compiled into handover_collision (control/collision/CMakeLists.txt).
 #pragma once
@@ -28,7 +31,8 @@ namespace handover::control {
 
 /// Damper state of one pair (for logs and tests).
 struct DamperState {
-  bool inside = false;   ///< d < iDist at the last compute()
+  bool inside = false;   ///< engaged (d < i_dist) at the last compute()
+  double i_dist = 0.0;   ///< m, the interaction distance it engaged at (>= the rule's iDist)
   double xi = 0.0;       ///< m/s, damping in use
   double bound = 0.0;    ///< m/s, lower bound on d_dot at the next step
 };
@@ -73,6 +77,7 @@ class CollisionConstraint : public Constraint {
   std::vector<DamperState> dampers_;
   double max_escape_ = 8.0;     ///< m/s^2, cap on a row's demanded d_ddot
   double reach_fraction_ = 0.5; ///< cap as a fraction of the row's reach
+  double broadphase_ = 0.05;    ///< m, farthest a fast pair may engage beyond its iDist
 };
 
 /// The bound of one damper row in chi space, for a pair with distance d,

@@ -83,9 +83,10 @@ struct Sim {
 };
 
 // `cap`: max_escape_acceleration; large by default so the tests below see
-// the damper's own algebra
+// the damper's own algebra. No broad-phase margin: every pair engages at its
+// iDist, however fast it closes (AHandClosingFast... covers the early entry)
 CollisionConfig tableConfig(const std::string& damping, double cap = 1000.0) {
-  return parseCollisionConfig("max_escape_acceleration: " + std::to_string(cap) +
+  return parseCollisionConfig("max_escape_acceleration: " + std::to_string(cap) + "\nbroadphase_margin: 0.0" +
                                   "\nescape_reach_fraction: " + (cap >= 1000.0 ? "1000" : "1000") +
                                   "\npairs:\n  - {name: table, robot: [panda_link5*, panda_link6, panda_link7*, "
                                   "panda_hand*], other: table, damping: " + damping + "}\n",
@@ -230,4 +231,61 @@ pairs:
   relaxed.constraint.setRuleEnabled("person_arm", true);
   EXPECT_GT(relaxed.rows(safe_sim.last_q, Vector7::Zero()), 0);
   EXPECT_THROW(relaxed.constraint.setRuleEnabled("no_such_rule", false), handover::InputError);
+}
+
+namespace {
+
+// A person's hand reaching at `speed` (m/s) toward the gripper of an arm that
+// holds its pose (a joint PD), until the hand stands where the gripper was.
+// Returns the smallest hand-gripper distance the damper rows allowed.
+double handReachingIntoTheGripper(double broadphase_margin, double speed) {
+  const CollisionConfig cfg = parseCollisionConfig(
+      "max_escape_acceleration: 8.0\nescape_reach_fraction: 1000\nbroadphase_margin: " +
+          std::to_string(broadphase_margin) +
+          "\npairs:\n  - {name: hand, robot: [panda_link7*, panda_hand*], other: human_hand, margin: 0.0, "
+          "iDist: 0.03, sDist: 0.005}\n",
+      "hand.yaml");
+  Sim sim(cfg);
+  const int rule = sim.constraint.collisionModel().ruleIndex("hand");
+  const Vector7 q0 = readyPose();
+  computeAll(sim.m, sim.data, q0, Vector7::Zero());
+  const Vector3 tcp = framePlacement(sim.m, sim.data, sim.m.frameId("tcp")).translation();
+  const Vector3 dir(-1.0, 0.0, 0.0);                      // toward the robot, from in front
+  const Vector3 start = tcp - 0.20 * dir;
+  CollisionEnvironment env;
+  env.person_valid = true;
+  Vector7 q = q0, v = Vector7::Zero();
+  double min_d = 1e9;
+  const double kp = 60.0, kd = 2.0 * std::sqrt(kp);
+  for (int step = 0; step < 1500; ++step) {
+    const double t = step * sim.ctx.dt;
+    const double travelled = std::min(speed * t, 0.20);
+    env.hand.translation() = start + travelled * dir;
+    env.hand_velocity.setZero();
+    if (travelled < 0.20) env.hand_velocity.head<3>() = speed * dir;
+    sim.constraint.setEnvironment(env);
+    const int n = sim.rows(q, v);
+    min_d = std::min(min_d, sim.minDistance(rule));
+    Vector7 qdd = kp * (q0 - q) - kd * v;
+    if (n > 0) qdd = project(qdd, sim.C, sim.lb, n);
+    v += sim.ctx.dt * qdd;
+    q += sim.ctx.dt * v;
+  }
+  return min_d;
+}
+
+}  // namespace
+
+// A receiver's hand reaching at 0.7 m/s toward the held gripper struck it: a
+// damper entered 3 cm out would need ~20 m/s^2 to give way, four times what
+// it may demand. Engaged earlier, at sDist + v^2 / max_escape (here 6.6 cm),
+// the arm gives way in time at 8 m/s^2.
+TEST(CollisionConstraint, AHandClosingFastEngagesEarlyEnoughForTheArmToGiveWay) {
+  const double s_dist = 0.005;
+  const double early = handReachingIntoTheGripper(0.05, 0.7);
+  const double at_idist = handReachingIntoTheGripper(0.0, 0.7);  // the broad phase caps engagement at iDist
+  EXPECT_LT(at_idist, s_dist - 0.002) << "entering at iDist the arm should be caught: the test proves nothing";
+  EXPECT_GE(early, s_dist - 1e-3);
+  // a slow hand engages at iDist, as before: the same distance either way
+  EXPECT_NEAR(handReachingIntoTheGripper(0.05, 0.2), handReachingIntoTheGripper(0.0, 0.2), 1e-9);
 }

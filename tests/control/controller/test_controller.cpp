@@ -268,6 +268,66 @@ TEST(Controller, InfeasibleSoftRowsAreRelaxedWithinTheLimits) {
   }
 }
 
+namespace {
+// A soft row asking joint 1 to speed up by `qdd` (rad/s^2): a collision row
+// whose person moves in faster than the slowed arm may move.
+class SpeedUpJointOne : public Constraint {
+ public:
+  explicit SpeedUpJointOne(double qdd) : qdd_(qdd) {}
+  const std::string& name() const override { return name_; }
+  int maxRows() const override { return 1; }
+  bool soft() const override { return true; }
+  int compute(const ControlContext&, Eigen::Ref<Eigen::MatrixXd> C, Eigen::Ref<Eigen::VectorXd> lb,
+              Eigen::Ref<Eigen::VectorXd> ub, Eigen::Ref<Eigen::VectorXd>, Eigen::Ref<Eigen::VectorXd>) override {
+    C.row(0).setZero();
+    C(0, VariableLayout::kQdd) = 1.0;
+    lb[0] = qdd_;
+    ub[0] = std::numeric_limits<double>::infinity();
+    return 1;
+  }
+
+ private:
+  double qdd_;
+  std::string name_ = "speed_up_joint_one";
+};
+}  // namespace
+
+// The slow-down near a person scales the velocity limits; a receiver's hand
+// reaching at 1 m/s into the held gripper struck it while the joints crept at
+// 15 % of their limit and the collision rows were relaxed. The slow-down now
+// gives way: the row holds, within the full limits, and the scale stays set.
+TEST(Controller, TheSlowDownGivesWayToARowItWouldMakeInfeasible) {
+  ControllerConfig cfg = loadControllerConfig(defaultControllerConfigPath());
+  const double a_lim = cfg.limits.acceleration_scale * panda().a_max[0];
+  for (const double demand : {0.5 * a_lim, -0.5 * a_lim}) {
+    Controller ctl(panda(), cfg);
+    ctl.formulation().addConstraint(std::make_shared<SpeedUpJointOne>(demand));
+    ctl.setSpeedScale(0.3);
+    KinematicSim sim;
+    sim.q = cfg.posture.target;
+    sim.v[0] = ctl.velocityLimit().limit()[0];  // joint 1 at its slowed limit
+    ctl.reset(sim.inputs());
+    ctl.step(sim.inputs());
+    ASSERT_FALSE(ctl.lastStepFellBack());
+    EXPECT_FALSE(ctl.lastStepRelaxed()) << demand;
+    EXPECT_GE(ctl.lastQdd()[0], demand - 1e-6);
+    EXPECT_NEAR(ctl.velocityLimit().speedScale(), 0.3, 1e-12);
+    if (demand > 0.0) {
+      // past the slowed limit, within the full one
+      EXPECT_TRUE(ctl.lastStepUnslowed());
+      EXPECT_EQ(ctl.unslowedCount(), 1);
+      const double next = sim.v[0] + cfg.period * ctl.lastQdd()[0];
+      EXPECT_GT(next, ctl.velocityLimit().limit()[0]);
+      EXPECT_LE(next, cfg.limits.velocity_scale * panda().v_max[0] + 1e-9);
+    } else {
+      // a row the slowed arm can meet: the slow-down holds
+      EXPECT_FALSE(ctl.lastStepUnslowed());
+      EXPECT_EQ(ctl.unslowedCount(), 0);
+      EXPECT_LE(sim.v[0] + cfg.period * ctl.lastQdd()[0], ctl.velocityLimit().limit()[0] + 1e-9);
+    }
+  }
+}
+
 TEST(Controller, TaskSwitchesByName) {
   Controller ctl(panda(), ControllerConfig());
   EXPECT_TRUE(ctl.setTaskEnabled("pose", true));
