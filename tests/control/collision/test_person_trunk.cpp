@@ -182,10 +182,18 @@ TEST(SensingBudget, EntersThePersonPairsMargins) {
   const CollisionModel cm = buildCollisionModel(pandaModel(), cfg);
   for (const CollisionPair& p : cm.pairs) {
     const std::string& rule = cm.rule_names[p.rule];
-    if (rule == "hand") EXPECT_NEAR(p.margin, 0.028, 1e-12);
-    if (rule == "arm") EXPECT_NEAR(p.margin, 0.038, 1e-12);
-    if (rule == "shared") EXPECT_NEAR(p.margin, 0.0, 1e-12);
-    if (rule == "table") EXPECT_NEAR(p.margin, 0.0, 1e-12);
+    if (rule == "hand") {
+      EXPECT_NEAR(p.margin, 0.028, 1e-12);
+    }
+    if (rule == "arm") {
+      EXPECT_NEAR(p.margin, 0.038, 1e-12);
+    }
+    if (rule == "shared") {
+      EXPECT_NEAR(p.margin, 0.0, 1e-12);
+    }
+    if (rule == "table") {
+      EXPECT_NEAR(p.margin, 0.0, 1e-12);
+    }
   }
 }
 
