@@ -1,9 +1,12 @@
 #include "fsm/handover/h2r_states.hpp"
 
+#include "fsm/handover/presentation_descent.hpp"
+
 #include <cmath>
 
 #include "fsm/handover/grasp_funnel.hpp"
 #include "fsm/handover/perception_checks.hpp"
+#include "fsm/handover/presentation_descent.hpp"
 #include "fsm/handover/tracking_setup.hpp"
 
 namespace handover::fsm {
@@ -61,16 +64,23 @@ void Approach::configure(const YamlReader& def) {
   near_distance_ = readPositive(def, "near_distance", 1.0);
   if (def.has("near_orientation_deg")) near_orientation_ = readPositive(def, "near_orientation_deg", 180.0) * M_PI / 180.0;
   if (def.has("standoff")) standoff_ = readRange(def, "standoff", 0.0, 0.3);
+  if (def.has("lift")) {
+    if (!hand_) def.child("lift").fail("only an approach to the hand (a give) has a lift");
+    lift_ = readRange(def, "lift", 0.0, 0.3);
+    lift_speed_ = readPositive(def, "lift_speed", 2.0);
+  }
 }
 
 void Approach::onStart(HandoverContext& ctx) {
   blind_ = false;
+  last_time_ = ctx.time;
   // take: meet the object where the person's reach will end. Not in a give: the receiver
   // reaches for the object, so going where their hand will stop met it halfway (seed 1: 10 gives
   // lost, 3 gained; strikes, timeouts)
   if (!hand_ && ctx.params->anticipate_reach) ctrl().anticipateRest(true);
   trackedChoice(ctx, hand_).adopt(latestPlan(ctx, hand_));
-  trackTarget(ctx, ctrl(), hand_, standoff_);
+  trackTarget(ctx, ctrl(), hand_, standoff_, TrackingGains::kFollow,
+              hand_ && lift_ > 0.0 ? descentShift(ctx, lift_) : Vector3::Zero().eval());
   if (!hand_) ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
 }
 
@@ -82,11 +92,14 @@ bool Approach::onRun(HandoverContext& ctx) {
     ctrl().setPoseTarget(ctx.in.tcp_pose);  // hold: no motion toward a person it cannot see
   } else if (!blind && blind_) {
     trackedChoice(ctx, hand_).adopt(latestPlan(ctx, hand_));
-    trackTarget(ctx, ctrl(), hand_, standoff_);
+    trackTarget(ctx, ctrl(), hand_, standoff_, TrackingGains::kFollow, ctx.tracking_shift);
   }
   blind_ = blind;
+  const double dt = ctx.time - last_time_;
+  last_time_ = ctx.time;
   if (!blind) {
     followPlan(ctx, ctrl(), hand_, standoff_);  // the best reachable target as the person moves
+    if (hand_ && lift_ > 0.0) followDescent(ctx, ctrl(), lift_, lift_speed_, dt);
     // the gains follow the tracked target's speed: a take's target (where the reach ends) stands
     // still once it is known; a give's is the receiver's hand itself
     const double speed = (hand_ ? body.velocity : ctx.in.target_velocity).head<3>().norm();
@@ -96,10 +109,14 @@ bool Approach::onRun(HandoverContext& ctx) {
     setOutput(withdrawn_);
     return true;
   }
-  // near, and the body arrived: the next phase's stiff gains meet a body at rest, not one still brought in
+  // near, and the body arrived: the next phase's stiff gains meet a body at rest, not one still brought in.
+  // A take is near its pre-grasp (the standoff is the line-up); a give is near the presentation itself,
+  // not the descent's raised target (which stands above the TCP while it rises)
   const bool arrived = ctx.params->arrive_speed <= 0.0 || body.velocity.head<3>().norm() <= ctx.params->arrive_speed;
-  if (!blind && arrived && positionError(ctx.in.tcp_pose, ctx.in.target_pose) <= near_distance_ &&
-      rotationError(ctx.in.tcp_pose, ctx.in.target_pose) <= near_orientation_) {
+  Isometry near_target = ctx.in.target_pose;
+  if (hand_) near_target.translation() -= ctx.in.observed_pose.linear() * ctx.tracking_shift;
+  if (!blind && arrived && positionError(ctx.in.tcp_pose, near_target) <= near_distance_ &&
+      rotationError(ctx.in.tcp_pose, near_target) <= near_orientation_) {
     setOutput(near_);
     return true;
   }

@@ -41,7 +41,9 @@ class WaitForPerson : public HandoverState {
 /// also needs the body to have arrived (slower than params.arrive_speed,
 /// when set): the stiff phase after it is for a body at rest. Tracking
 /// gains follow the body's speed (setPhaseGainsForSpeed).
-/// Keys: near_distance (m, TCP to target frame).
+/// Keys: near_distance (m, TCP to target frame); a give's lift (m, optional,
+/// default 0: none) with lift_speed (m/s): the presentation is approached
+/// from above the receiver's hand (presentation_descent.hpp).
 class Approach : public HandoverState {
  public:
   explicit Approach(bool hand);
@@ -55,6 +57,9 @@ class Approach : public HandoverState {
   double near_distance_ = 0.1;
   double near_orientation_ = M_PI;  ///< rad
   double standoff_ = 0.0;           ///< m, pre-grasp distance along the approach axis
+  double lift_ = 0.0;               ///< m, most the give's target is raised over the hand
+  double lift_speed_ = 0.4;         ///< m/s, fastest change of the lift
+  double last_time_ = 0.0;          ///< s, the last cycle (the lift's rate)
   bool blind_ = false;              ///< holding: the tracked body's data is stale
 };
 

@@ -51,6 +51,11 @@ struct HandoverContext : Context {
   /// m: how far the tracked target is backed off along its approach axis, as
   /// trackTarget (tracking_setup.hpp) last commanded it.
   double tracking_standoff = 0.0;
+  /// m, observed frame: how far the tracked target is shifted from the
+  /// chosen one (a give: raised over the receiver's hand, and beside it while
+  /// the gripper rises: presentation_descent.hpp), as setStandoff last
+  /// commanded it.
+  Vector3 tracking_shift = Vector3::Zero();
 
   /// The object's pose in the TCP frame, held with `grasp`.
   Isometry objectInTcp() const { return grasp.offset.inverse(); }

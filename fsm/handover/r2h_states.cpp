@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "fsm/handover/perception_checks.hpp"
+#include "fsm/handover/presentation_descent.hpp"
 #include "fsm/handover/tracking_setup.hpp"
 
 namespace handover::fsm {
@@ -59,17 +60,26 @@ void Present::configure(const YamlReader& def) {
   settle_time_ = readRange(def, "settle_time", 0.0, 5.0);
   if (def.has("pull_threshold")) pull_threshold_ = readPositive(def, "pull_threshold", 100.0);
   if (def.has("pull_hold_time")) pull_hold_ = readRange(def, "pull_hold_time", 0.0, 5.0);
+  if (def.has("lift")) {
+    lift_ = readRange(def, "lift", 0.0, 0.3);
+    lift_speed_ = readPositive(def, "lift_speed", 2.0);
+  }
 }
 
 void Present::onStart(HandoverContext& ctx) {
   since_ = pull_since_ = -1.0;
+  last_time_ = ctx.time;
   ctx.force_holding = ctx.force;  // the object's and hand's weight, as carried in
   ctx.interaction_holding = ctx.interaction;
-  trackTarget(ctx, ctrl(), true);
+  // the descent the approach began goes on from where it is
+  trackTarget(ctx, ctrl(), true, 0.0, TrackingGains::kFollow,
+              lift_ > 0.0 ? ctx.tracking_shift : Vector3::Zero().eval());
 }
 
 bool Present::onRun(HandoverContext& ctx) {
   setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow, ctx.in.hand.velocity.head<3>().norm());
+  if (lift_ > 0.0) followDescent(ctx, ctrl(), lift_, lift_speed_, ctx.time - last_time_);
+  last_time_ = ctx.time;
   // a person who takes hold and pulls before the robot settled: that is the
   // handover, and the hand moving away is the pull, not a withdrawal
   if (pull_threshold_ > 0.0 && (ctx.interaction - ctx.interaction_holding).norm() > pull_threshold_) {
@@ -86,7 +96,9 @@ bool Present::onRun(HandoverContext& ctx) {
     return true;
   }
   // the receiver takes the object, not the gripper: its pose up to its symmetry counts
-  if (!presentedAtTarget(ctx.in, ctx.object, pos_tol_, rot_tol_, speed_tol_)) {
+  HandoverInput at = ctx.in;  // against the presentation itself, not the raised target
+  at.target_pose = trackedGraspFrame(ctx);
+  if (!presentedAtTarget(at, ctx.object, pos_tol_, rot_tol_, speed_tol_)) {
     since_ = -1.0;
     return false;
   }
@@ -112,7 +124,7 @@ void DetectPull::onStart(HandoverContext& ctx) {
   // hold still so a pull builds force - where the object was to be
   // presented: Present accepts a TCP short of it by up to its tolerance,
   // and the last centimetres are what put the object in the hand
-  ctrl().setPoseTarget(ctx.in.target_pose);
+  ctrl().setPoseTarget(trackedGraspFrame(ctx));
 }
 
 bool DetectPull::onRun(HandoverContext& ctx) {

@@ -59,19 +59,24 @@ inline void setPhaseGainsForSpeed(const HandoverParams& p, ControllerHandle& ctr
                             rest_o + moving * (p.tracking_orientation_stiffness - rest_o));
 }
 
-/// Backs the tracked target off by `standoff` (m) along its approach axis,
-/// the posture reference with it. RT safe.
-inline void setStandoff(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double standoff) {
+/// Backs the tracked target off by `standoff` (m) along its approach axis
+/// and shifts it by `shift` (m, in the observed body's frame: a give's
+/// descent onto the palm, presentation_descent.hpp), the posture reference
+/// with it. RT safe.
+inline void setStandoff(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double standoff,
+                        const Vector3& shift = Vector3::Zero()) {
   const TrackedChoice& c = trackedChoice(ctx, hand);
-  ctrl.setTrackingOffset(TrackingOffset{c.offset * Eigen::Translation3d(0.0, 0.0, -standoff), c.planned});
+  ctrl.setTrackingOffset(
+      TrackingOffset{Eigen::Translation3d(shift) * c.offset * Eigen::Translation3d(0.0, 0.0, -standoff), c.planned});
   ctx.tracking_standoff = standoff;
+  ctx.tracking_shift = shift;
   if (c.planned) ctrl.setPostureTarget(standoff > 0.0 ? c.q_pre : c.q_target);
 }
 
 inline void trackTarget(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double standoff = 0.0,
-                        TrackingGains gains = TrackingGains::kFollow) {
+                        TrackingGains gains = TrackingGains::kFollow, const Vector3& shift = Vector3::Zero()) {
   ctrl.setObservationTarget(hand ? ObservationTarget::kHand : ObservationTarget::kObject);
-  setStandoff(ctx, ctrl, hand, standoff);
+  setStandoff(ctx, ctrl, hand, standoff, shift);
   ctrl.clearPoseTarget();
   setTrackingGains(*ctx.params, ctrl, gains);
   ctrl.enableTracking(true);
@@ -79,16 +84,19 @@ inline void trackTarget(HandoverContext& ctx, ControllerHandle& ctrl, bool hand,
 
 /// The tracked grasp (or presentation) frame itself, world: the target the
 /// controller tracked last cycle moved forward by the standoff it was backed
-/// off by (exact also when the controller resolves a free axis itself).
+/// off by and back by the shift it was shifted by (exact also when the
+/// controller resolves a free axis itself).
 inline Isometry trackedGraspFrame(const HandoverContext& ctx) {
-  return ctx.in.target_pose * Eigen::Translation3d(0.0, 0.0, ctx.tracking_standoff);
+  Isometry frame = ctx.in.target_pose * Eigen::Translation3d(0.0, 0.0, ctx.tracking_standoff);
+  frame.translation() -= ctx.in.observed_pose.linear() * ctx.tracking_shift;
+  return frame;
 }
 
 /// While a state may still change its mind (approaching): follows the
 /// planner's choice when it switches. True if the target changed.
 inline bool followPlan(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double standoff = 0.0) {
   if (!trackedChoice(ctx, hand).adopt(latestPlan(ctx, hand))) return false;
-  trackTarget(ctx, ctrl, hand, standoff);
+  trackTarget(ctx, ctrl, hand, standoff, TrackingGains::kFollow, ctx.tracking_shift);
   return true;
 }
 

@@ -258,6 +258,7 @@ struct World {
     in.human_distance = std::min(human_distance, arm_distance);
     in.person_constraint_engaged = in.human_distance < kPersonIDist;
     in.observed_target = c.observation;
+    in.observed_pose = c.observation == ObservationTarget::kHand ? handPose() : objectPose();
     in.target_pose = desired(c);
     in.target_velocity.head<3>() =
         c.observation == ObservationTarget::kHand ? hand_vel : in.object.velocity.head<3>().eval();

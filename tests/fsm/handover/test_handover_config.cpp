@@ -108,8 +108,8 @@ TEST(HandoverConfig, TakeGainsAndTheGraspFunnel) {
 }
 
 TEST(HandoverConfig, MissingThresholdIsAnError) {
-  const std::string msg = loadError(replaced(shipped(), "near_distance: 0.08, timeout: 10.0}\n            Present",
-                                             "timeout: 10.0}\n            Present"));
+  const std::string msg =
+      loadError(replaced(shipped(), "ApproachHand, near_distance: 0.08, lift", "ApproachHand, lift"));
   EXPECT_NE(msg.find("missing required key 'near_distance'"), std::string::npos) << msg;
 }
 

@@ -2,6 +2,9 @@
 // config/fsm.yaml, driven by the toy world.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "fsm/handover/perception_checks.hpp"
 #include "tests/fsm/handover/fake_world.hpp"
 
@@ -72,6 +75,54 @@ TEST(HandoverR2H, WaitingForThePullHoldsAtThePresentationPoseNotShortOfIt) {
   EXPECT_LT(rotationError(rig.ctl.pose, in.target_pose), 0.01);
 }
 
+// A receiver's hand above the arm: brought straight up to the presentation,
+// the gripper came from below and stopped under the person's hand (side
+// presentations of a ball stalled 11 cm short: the collision rows hold it
+// there and a local controller cannot go around). While the TCP is lower than
+// the presentation, the target stands straight above the TCP on the descent's
+// surface (a 45-degree cone on the presentation, capped at 8 cm): nothing
+// pulls the gripper across under the hand. Otherwise the target is over the
+// palm and comes down the cone; the object ends where it is presented, and
+// the approach hands over to Present near the presentation itself, not near
+// the raised target. (The toy world has no
+// collision rows: the path itself is run in the simulator.)
+TEST(HandoverR2H, AGripperBelowAHighHandRisesBeforeItComesOverThePalm) {
+  Rig rig(true);
+  const Vector3 high(0.55, 0.0, 0.62);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+  rig.world.moveHand(high, 1.5);
+  ASSERT_TRUE(rig.runUntilState("/Approach", 5.0)) << rig.fsm->activePath();
+  int below = 0, above = 0;
+  Vector3 last_shift = Vector3::Constant(1.0);
+  ASSERT_TRUE(rig.runUntil(
+      [&] {
+        if (Rig::endsWith(rig.fsm->activePath(), "DetectPull")) return true;
+        const Vector3 presentation = rig.world.hand + rig.world.object_in_hand;
+        const Vector3 d = rig.world.tcp.translation() - presentation;
+        const double surface = std::min(std::hypot(d.x(), d.y()), 0.08);
+        const Vector3 shift = rig.ctl.offset.translation() - rig.world.object_in_hand;  // hand frame = world axes here
+        const Vector3 target = presentation + shift;
+        EXPECT_LE(shift.z(), 0.08 + 1e-9);
+        EXPECT_GE(shift.z(), -1e-9);
+        if (d.z() < -0.03) {  // below: the target is above the TCP, not across under the hand
+          EXPECT_LT((target - rig.world.tcp.translation()).head<2>().norm(), 0.02) << "t = " << rig.world.time;
+          EXPECT_GT(target.z(), rig.world.tcp.translation().z()) << "t = " << rig.world.time;
+          ++below;
+        } else if (d.z() > surface) {
+          ++above;
+        }
+        if (Rig::endsWith(rig.fsm->activePath(), "Present")) EXPECT_LT(d.norm(), 0.09);  // near the presentation itself
+        last_shift = shift;
+        return false;
+      },
+      20.0))
+      << rig.fsm->activePath();
+  EXPECT_GT(below, 0);
+  EXPECT_GT(above, 0);
+  EXPECT_LT(last_shift.norm(), 0.01);  // it came down onto the presentation
+  EXPECT_LT((rig.ctl.pose.translation() - (rig.world.hand + rig.world.object_in_hand)).norm(), 0.01);
+}
+
 TEST(HandoverR2H, ObjectTakenByAReceiverWhoHeldItEarlyIsConfirmedGone) {
   // the receiver carries the object's weight before the robot starts waiting
   // for the pull, so the force DetectPull records has no weight left to lose;
@@ -132,9 +183,13 @@ TEST(HandoverR2H, WaitsForAnOpenHand) {
   ASSERT_TRUE(rig.runUntilState("/Approach", 1.0));
   EXPECT_EQ(rig.ctl.observation, ObservationTarget::kHand);
   EXPECT_TRUE(rig.ctl.tracking);
-  // the tracking offset puts the object where params.object_in_hand says
+  // the tracking offset puts the object where params.object_in_hand says,
+  // shifted by the descent onto the palm (raised by at most 8 cm)
   const Isometry expected = rig.fsm->params().object_in_hand;
-  EXPECT_TRUE(rig.ctl.offset.isApprox(expected, 1e-12));
+  EXPECT_TRUE(rig.ctl.offset.linear().isApprox(expected.linear(), 1e-12));
+  const Vector3 raised = rig.ctl.offset.translation() - expected.translation();
+  EXPECT_GE(raised.z(), 0.0);
+  EXPECT_LE(raised.z(), 0.08 + 1e-12);
 }
 
 TEST(HandoverR2H, NoPullKeepsHoldingRetreatsAndRetries) {
