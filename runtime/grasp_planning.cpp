@@ -72,7 +72,6 @@ int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool 
   obstacles_[1] = capsule(human.upper_arm, settings_.upper_arm_length, settings_.upper_arm_radius);
   if (!with_hand) return 2;
   obstacles_[2] = capsule(human.hand, 0.0, settings_.hand_radius);
-  obstacles_[2].gripper_may_touch = true;  // the gripper shares the object with the hand
   return 3;
 }
 

@@ -45,22 +45,6 @@ double armClearance(const Model& model, const ChainPoses& poses, const ObstacleC
   return best;
 }
 
-double gripperClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
-                        int num_obstacles) {
-  double best = std::numeric_limits<double>::infinity();
-  for (const Capsule& c : model.capsules) {
-    if (c.role == CapsuleRole::kArm) continue;
-    const Isometry& X = poses.oMb[c.body];
-    const Vector3 a = X * c.a, b = X * c.b;
-    for (int k = 0; k < num_obstacles; ++k) {
-      const ObstacleCapsule& o = obstacles[k];
-      if (o.gripper_may_touch) continue;
-      best = std::min(best, segmentDistance(a, b, o.a, o.b) - c.radius - o.radius);
-    }
-  }
-  return best;
-}
-
 double lowestArmPoint(const Model& model, const ChainPoses& poses, int first_body) {
   double lowest = std::numeric_limits<double>::infinity();
   for (const Capsule& c : model.capsules) {

@@ -14,9 +14,6 @@ struct ObstacleCapsule {
   Vector3 a = Vector3::Zero();  ///< m, world
   Vector3 b = Vector3::Zero();  ///< m, world
   double radius = 0.0;          ///< m
-  /// The gripper may touch it at the grasp: it shares the object with it (the
-  /// person's hand in a take), so it does not block a grasp (gripperClearance).
-  bool gripper_may_touch = false;
 };
 
 /// Smallest distance between the segments [p0, p1] and [q0, q1] (m).
@@ -26,12 +23,6 @@ double segmentDistance(const Vector3& p0, const Vector3& p1, const Vector3& q0, 
 /// `poses` and any obstacle (m, negative when they overlap); +infinity
 /// without obstacles.
 double armClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles, int num_obstacles);
-
-/// Smallest surface distance between the gripper's capsules (roles kGripper
-/// and kFingertip) posed by `poses` and the obstacles that block a grasp (not
-/// gripper_may_touch), m; +infinity without any.
-double gripperClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
-                        int num_obstacles);
 
 /// Lowest point (world z, m) of the capsules of bodies `first_body`.. (the
 /// base and link 1 stand on the table and are left out with first_body = 2).

@@ -93,10 +93,6 @@ GraspSelectionConfig graspSelectionConfigFrom(const YamlReader& root) {
     c.table_clearance = nonNegative(*r, "clearance", c.table_clearance, 1.0);
     r->finish();
   }
-  if (auto r = root.optionalChild("person_arm")) {
-    c.arm_overlap = nonNegative(*r, "overlap", c.arm_overlap, 0.2);
-    r->finish();
-  }
   c.hysteresis = nonNegative(root, "hysteresis", c.hysteresis, 1e3);
   c.declared_preference = nonNegative(root, "declared_preference", c.declared_preference, 1e3);
   if (auto r = root.optionalChild("cold_solves_per_update")) {

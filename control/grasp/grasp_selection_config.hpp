@@ -30,10 +30,6 @@ struct GraspSelectionConfig {
   /// onward) dip below table_height + table_clearance is not reachable.
   double table_height = 0.0;
   double table_clearance = 0.02;
-  /// m: how deep the gripper may overlap an obstacle that blocks a grasp (the
-  /// person's arm) at the exact grasp; the grasp closes within its position
-  /// tolerance of the grasp frame, so an overlap up to it is still a grasp.
-  double arm_overlap = 0.02;
   double hysteresis = 0.15;           ///< score units another candidate must gain to replace the current choice
   /// Score units added to the grasps the object declares over the families
   /// its shape allows (GraspSpec::preference; applied by whoever builds the specs).

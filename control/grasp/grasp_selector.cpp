@@ -45,12 +45,6 @@ bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, 
   const ScoreTerms pre = scoreConfiguration(model_, frame_, poses, p.q, q_now, obstacles, num_obstacles, config_.score);
   chainPoses(model_, g.q, poses);
   if (lowestArmPoint(model_, poses) < floor) return false;
-  // the collision rows keep the gripper off the person's arm even while it
-  // shares the object with the hand (config/collision.yaml, the sharing
-  // rules): a grasp that puts the gripper deeper inside the arm than the
-  // grasp's position tolerance is never reached, the approach stalls against
-  // the arm until it times out
-  if (gripperClearance(model_, poses, obstacles, num_obstacles) < -config_.arm_overlap) return false;
   ScoreTerms t = scoreConfiguration(model_, frame_, poses, g.q, q_now, obstacles, num_obstacles, config_.score);
   // the arm must pass the pre-grasp too: the worse margin and clearance count
   t.joint_margin = std::min(t.joint_margin, pre.joint_margin);

@@ -245,45 +245,6 @@ TEST(GraspSelector, AvoidsAnObstacleNearTheBestGraspConfiguration) {
   EXPECT_GT(c.score.total, totalScore(free_choice.score, testing::shippedConfig().score) - 1.0);
 }
 
-// A ball on the palm taken from the top: the fingers' capsule spans the
-// closing axis, and turned toward the person's wrist it lay inside the
-// forearm. The controller's sharing rules keep the gripper off the arm, so
-// the grasp was never reached (the gripper stalled 2 cm above the ball until
-// the grasp timed out). A grasp that puts the gripper inside the arm deeper
-// than the grasp's tolerance absorbs is not a choice; the hand the object
-// rests on may touch it.
-TEST(GraspSelector, AGraspThatPutsTheGripperInsideThePersonsArmIsNotChosen) {
-  const Model& model = testing::panda();
-  GraspSpec top;
-  top.placement.linear() = Eigen::AngleAxisd(M_PI, Vector3::UnitX()).toRotationMatrix();
-  top.has_free_axis = true;
-  top.free_axis = Vector3::UnitZ();
-  GraspSelector selector(model, {top}, testing::shippedConfig());
-  const Isometry X_obj = bottleAt(Vector3(0.55, -0.1, 0.30));
-  const Vector7 q_now = testing::readyConfiguration();
-  const GraspChoice free_choice = selector.update(X_obj, q_now);
-  ASSERT_TRUE(free_choice.valid);
-  // a forearm ending under the ball along the free choice's closing axis
-  ChainPoses poses;
-  chainPoses(model, free_choice.q_grasp, poses);
-  const Isometry tcp = tcpPose(model, free_choice.q_grasp);
-  const Vector3 across = tcp.linear().col(1);
-  ObstacleCapsule arm[2];
-  arm[0] = ObstacleCapsule{X_obj.translation() + 0.05 * across - Vector3(0, 0, 0.03),
-                           X_obj.translation() + 0.35 * across - Vector3(0, 0, 0.05), 0.035};
-  arm[1] = ObstacleCapsule{X_obj.translation() - Vector3(0, 0, 0.045), X_obj.translation() - Vector3(0, 0, 0.045), 0.04};
-  arm[1].gripper_may_touch = true;  // the palm the ball rests on
-  const double overlap = testing::shippedConfig().arm_overlap;  // what the grasp's tolerance absorbs
-  ASSERT_LT(gripperClearance(model, poses, arm, 2), -overlap) << "the free choice must reach deep into the arm";
-  selector.reset();
-  const GraspChoice& c = selector.update(X_obj, q_now, arm, 2);
-  ASSERT_TRUE(c.valid) << "a turn about the ball's axis keeps the fingers off the arm";
-  chainPoses(model, c.q_grasp, poses);
-  EXPECT_GE(gripperClearance(model, poses, arm, 2), -overlap);
-  // only the arm blocks: the palm alone leaves the choice free
-  EXPECT_TRUE(std::isinf(gripperClearance(model, poses, &arm[1], 1)));
-}
-
 TEST(GraspSelector, ReportsNoChoiceForAnObjectOutOfReach) {
   const Model& model = testing::panda();
   GraspSelector selector(model, {bottleSideGrasp()}, testing::shippedConfig());
