@@ -58,4 +58,16 @@ inline void followDescent(HandoverContext& ctx, ControllerHandle& ctrl, double m
   if (next != now) setStandoff(ctx, ctrl, true, ctx.tracking_standoff, next);
 }
 
+/// Present, near the presentation: the descent's shift goes to zero by at
+/// most speed * dt (over the palm, the cone held a gripper blocked a few cm
+/// across as high above the presentation as it was across, out of Present's
+/// tolerance; the approach's descent has done its part). RT safe.
+inline void settleDescent(HandoverContext& ctx, ControllerHandle& ctrl, double speed, double dt) {
+  const Vector3 now = ctx.tracking_shift;
+  if (now.isZero()) return;
+  const double step = speed * std::max(0.0, dt);
+  const Vector3 next = now.norm() > step ? Vector3(now * (1.0 - step / now.norm())) : Vector3::Zero();
+  setStandoff(ctx, ctrl, true, ctx.tracking_standoff, next);
+}
+
 }  // namespace handover::fsm

@@ -60,10 +60,7 @@ void Present::configure(const YamlReader& def) {
   settle_time_ = readRange(def, "settle_time", 0.0, 5.0);
   if (def.has("pull_threshold")) pull_threshold_ = readPositive(def, "pull_threshold", 100.0);
   if (def.has("pull_hold_time")) pull_hold_ = readRange(def, "pull_hold_time", 0.0, 5.0);
-  if (def.has("lift")) {
-    lift_ = readRange(def, "lift", 0.0, 0.3);
-    lift_speed_ = readPositive(def, "lift_speed", 2.0);
-  }
+  if (def.has("lift_speed")) lift_speed_ = readPositive(def, "lift_speed", 2.0);
 }
 
 void Present::onStart(HandoverContext& ctx) {
@@ -72,13 +69,12 @@ void Present::onStart(HandoverContext& ctx) {
   ctx.force_holding = ctx.force;  // the object's and hand's weight, as carried in
   ctx.interaction_holding = ctx.interaction;
   // the descent the approach began goes on from where it is
-  trackTarget(ctx, ctrl(), true, 0.0, TrackingGains::kFollow,
-              lift_ > 0.0 ? ctx.tracking_shift : Vector3::Zero().eval());
+  trackTarget(ctx, ctrl(), true, 0.0, TrackingGains::kFollow, ctx.tracking_shift);
 }
 
 bool Present::onRun(HandoverContext& ctx) {
   setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow, ctx.in.hand.velocity.head<3>().norm());
-  if (lift_ > 0.0) followDescent(ctx, ctrl(), lift_, lift_speed_, ctx.time - last_time_);
+  settleDescent(ctx, ctrl(), lift_speed_, ctx.time - last_time_);
   last_time_ = ctx.time;
   // a person who takes hold and pulls before the robot settled: that is the
   // handover, and the hand moving away is the pull, not a withdrawal

@@ -34,10 +34,10 @@ class HoldReady : public HandoverState {
 /// [Presented, Withdrawn] Tracks the presentation frame (still relative to
 /// the hand) until position, orientation and relative speed errors stay within
 /// tolerance for settle_time. Keys: position_tolerance (m),
-/// orientation_tolerance_deg, speed_tolerance (m/s), settle_time (s); lift
-/// (m, optional) with lift_speed (m/s): the descent onto the palm the
-/// approach began goes on (presentation_descent.hpp); the errors are those to
-/// the presentation itself, not to the raised target.
+/// orientation_tolerance_deg, speed_tolerance (m/s), settle_time (s);
+/// lift_speed (m/s, optional): the approach's descent onto the palm ends,
+/// its shift going to zero at that speed (presentation_descent.hpp); the
+/// errors are those to the presentation itself, not to the raised target.
 class Present : public HandoverState {
  public:
   Present();
@@ -49,7 +49,7 @@ class Present : public HandoverState {
   int presented_, withdrawn_, pulled_;
   double pos_tol_ = 0.02, rot_tol_ = 0.2, speed_tol_ = 0.05, settle_time_ = 0.2;
   double pull_threshold_ = 0.0, pull_hold_ = 0.05;  ///< N (0 = off), s
-  double lift_ = 0.0, lift_speed_ = 0.4;            ///< m, m/s (presentation_descent.hpp)
+  double lift_speed_ = 0.4;                         ///< m/s (presentation_descent.hpp)
   double since_ = -1.0, pull_since_ = -1.0, last_time_ = 0.0;
 };
 
