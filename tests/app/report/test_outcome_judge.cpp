@@ -52,6 +52,25 @@ RunSummary play(const Script& sc, const std::string& fsm_outcome = "success") {
   return judge.finish(true, fsm_outcome, 1, 0, 0, 1.0);
 }
 
+// A give at 1 kHz for 1 s: the fingers hold the object until t_given, the
+// person's hand from then on (held: false - nobody holds it at all); the
+// object touches the table from t_on_table.
+OutcomeJudge playGive(double t_given, double t_on_table = 1e9, bool held = true) {
+  JudgeSettings js;
+  js.mode = "robot_to_human";
+  OutcomeJudge judge(js);
+  for (int i = 0; i <= 1000; ++i) {
+    StepFacts f;
+    f.time = i * 1e-3;
+    const bool given = f.time > t_given;
+    f.hand_holds_object = held && given;
+    f.left_finger_on_object = f.right_finger_on_object = held && !given;
+    f.object_on_table = f.time > t_on_table;
+    judge.observe(f);
+  }
+  return judge;
+}
+
 // A robot geom inside the person's true body is a contact even when the
 // simulator's contact list is empty (a -4 mm true clearance used to be judged
 // a success).
@@ -115,31 +134,13 @@ TEST(OutcomeJudge, ObjectOnTableIsDrop) {
 // whose object grazes the table while they still hold it, has not dropped it
 // (6 gives of the generated benchmark were judged object_drop that way).
 TEST(OutcomeJudge, AnObjectOnTheTableInThePersonsHandIsNotADrop) {
-  JudgeSettings js;
-  js.mode = "robot_to_human";
-  OutcomeJudge judge(js);
-  for (int i = 0; i <= 1000; ++i) {
-    StepFacts f;
-    f.time = i * 1e-3;
-    const bool given = f.time > 0.3;
-    f.hand_holds_object = given;
-    f.left_finger_on_object = f.right_finger_on_object = !given;
-    f.object_on_table = f.time > 0.8;  // the person sets it down
-    judge.observe(f);
-  }
-  const RunSummary r = judge.finish(true, "success", 1, 0, 0, 1.0);
+  // the person sets it down after the exchange
+  const RunSummary r = playGive(0.3, 0.8).finish(true, "success", 1, 0, 0, 1.0);
   EXPECT_FALSE(r.object_dropped);
   EXPECT_EQ(r.outcome, "success");
 
   // the same table contact with nobody holding it is a drop
-  OutcomeJudge loose(js);
-  for (int i = 0; i <= 1000; ++i) {
-    StepFacts f;
-    f.time = i * 1e-3;
-    f.object_on_table = f.time > 0.8;
-    loose.observe(f);
-  }
-  EXPECT_TRUE(loose.finish(true, "success", 1, 0, 0, 1.0).object_dropped);
+  EXPECT_TRUE(playGive(0.3, 0.8, false).finish(true, "success", 1, 0, 0, 1.0).object_dropped);
 }
 
 TEST(OutcomeJudge, QpFailureIsUnsafe) {
@@ -183,17 +184,7 @@ TEST(OutcomeJudge, RobotNotFinishedIsNotSuccess) {
 }
 
 TEST(OutcomeJudge, RobotToHumanNeedsObjectInHandAndFingersOff) {
-  JudgeSettings js;
-  js.mode = "robot_to_human";
-  OutcomeJudge judge(js);
-  for (int i = 0; i <= 1000; ++i) {
-    StepFacts f;
-    f.time = i * 1e-3;
-    const bool given = f.time > 0.5;
-    f.hand_holds_object = given;
-    f.left_finger_on_object = f.right_finger_on_object = !given;
-    judge.observe(f);
-  }
+  OutcomeJudge judge = playGive(0.5);
   EXPECT_TRUE(judge.exchanged());
   EXPECT_EQ(judge.finish(true, "success", 1, 0, 0, 0.5).outcome, "success");
 }
