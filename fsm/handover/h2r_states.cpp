@@ -1,7 +1,5 @@
 #include "fsm/handover/h2r_states.hpp"
 
-#include "fsm/handover/presentation_descent.hpp"
-
 #include <cmath>
 
 #include "fsm/handover/grasp_funnel.hpp"
@@ -113,8 +111,7 @@ bool Approach::onRun(HandoverContext& ctx) {
   // A take is near its pre-grasp (the standoff is the line-up); a give is near the presentation itself,
   // not the descent's raised target (which stands above the TCP while it rises)
   const bool arrived = ctx.params->arrive_speed <= 0.0 || body.velocity.head<3>().norm() <= ctx.params->arrive_speed;
-  Isometry near_target = ctx.in.target_pose;
-  if (hand_) near_target.translation() -= ctx.in.observed_pose.linear() * ctx.tracking_shift;
+  const Isometry near_target = hand_ ? trackedGraspFrame(ctx) : ctx.in.target_pose;
   if (!blind && arrived && positionError(ctx.in.tcp_pose, near_target) <= near_distance_ &&
       rotationError(ctx.in.tcp_pose, near_target) <= near_orientation_) {
     setOutput(near_);

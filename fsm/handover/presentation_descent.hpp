@@ -29,8 +29,9 @@
 
 namespace handover::fsm {
 
-/// The shift (m, hand frame) the descent asks for now.
-inline Vector3 descentShift(const HandoverContext& ctx, double max_lift) {
+/// The shift (m, hand frame) the descent asks for now; `rising`: the TCP is
+/// below the presentation, the target stands above it.
+inline Vector3 descentShift(const HandoverContext& ctx, double max_lift, bool* rising = nullptr) {
   // the chosen presentation on the observed hand (a turn about the hand's
   // vertical, which the controller may add, keeps one centred over the palm)
   const Isometry& hand = ctx.in.observed_pose;
@@ -38,19 +39,21 @@ inline Vector3 descentShift(const HandoverContext& ctx, double max_lift) {
   const Vector3 d = hand.linear().transpose() * (ctx.in.tcp_pose.translation() - target);
   const double across = std::hypot(d.x(), d.y());
   const double surface = std::min(across, max_lift);
-  // below the presentation by more than the tracking sags: rise where it is
-  if (d.z() < -0.02) return Vector3(d.x(), d.y(), surface);
-  return Vector3(0.0, 0.0, surface);                           // above: over and down the cone
+  // below the presentation by more than the tracking sags: rise where it is;
+  // otherwise over the palm and down the cone
+  const bool below = d.z() < -0.02;
+  if (rising) *rising = below;
+  return below ? Vector3(d.x(), d.y(), surface) : Vector3(0.0, 0.0, surface);
 }
 
 /// Moves the tracked presentation's shift toward descentShift: its height and,
-/// once the TCP is above the surface, its way back over the palm by at most
-/// speed * dt (dt: s since the last call); below the surface the target stays
-/// above the TCP however fast the hand moves. RT safe.
+/// once the TCP is no longer below the presentation, its way back over the
+/// palm by at most speed * dt (dt: s since the last call); while rising the
+/// target stays above the TCP however fast the hand moves. RT safe.
 inline void followDescent(HandoverContext& ctx, ControllerHandle& ctrl, double max_lift, double speed, double dt) {
   const Vector3 now = ctx.tracking_shift;
-  const Vector3 want = descentShift(ctx, max_lift);
-  const bool below = want.head<2>().squaredNorm() > 0.0;
+  bool below = false;
+  const Vector3 want = descentShift(ctx, max_lift, &below);
   const Vector3 change = below ? Vector3(0.0, 0.0, want.z() - now.z()) : Vector3(want - now);
   const double step = speed * std::max(0.0, dt);
   Vector3 next = change.norm() > step ? Vector3(now + change * (step / change.norm())) : Vector3(now + change);
