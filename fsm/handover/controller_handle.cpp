@@ -120,6 +120,14 @@ void ControllerHandle::clearTrackingStiffness() {
   change(Channel::kGains, next);
 }
 
+void ControllerHandle::setPoseStiffness(double translation, double orientation) {
+  ScopedCommands next = ledger_->current();
+  next.pose_gains.active = true;
+  next.pose_gains.translation = translation;
+  next.pose_gains.orientation = orientation;
+  change(Channel::kPoseGains, next);
+}
+
 void ControllerHandle::setTaskEnabled(int task, bool on) {
   if (task < 0 || task >= 32 || task == ledger_->tasks().tracking || task == ledger_->tasks().pose) {
     if (task == ledger_->tasks().tracking && task >= 0) enableTracking(on);

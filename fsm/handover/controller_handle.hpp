@@ -64,6 +64,8 @@ class ControllerHandle {
   void setSpeedScale(double scale);
   void setTrackingStiffness(double translation, double orientation);
   void clearTrackingStiffness();
+  /// The pose task's stiffnesses (1/s^2, critically damped) for this state.
+  void setPoseStiffness(double translation, double orientation);
   void relaxHandClearance(bool relaxed);
   /// Targets where the person's reach will end (ControllerInterface::anticipateRest).
   void anticipateRest(bool on);

@@ -212,6 +212,14 @@ void WaitForRelease::onStart(HandoverContext& ctx) {
   trackTarget(ctx, ctrl(), false);  // follow the object while the person still holds it
 }
 
+void WaitForRelease::hold(HandoverContext& ctx) {
+  ctrl().enableTracking(false);
+  ctrl().setPoseTarget(ctx.in.tcp_pose);
+  ctrl().setPoseStiffness(ctx.params->align_tracking_translation_stiffness,
+                          ctx.params->align_tracking_orientation_stiffness);
+  holding_ = true;
+}
+
 bool WaitForRelease::onRun(HandoverContext& ctx) {
   const bool hand_seen = fresh(ctx.in.hand, ctx.params->max_data_age);
   const double hand_tcp = positionError(ctx.in.hand.pose, ctx.in.tcp_pose);
@@ -227,13 +235,9 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   }
   if (since_ < 0.0) since_ = ctx.time;
   if (carry_since_ < 0.0) carry_since_ = ctx.time;
-  if (!holding_ && share_ >= 0.0) {
-    // the robot carries it: stop following the object's estimate, which still
-    // moves with the person's (leaving) hand until the release is confirmed
-    ctrl().enableTracking(false);
-    ctrl().setPoseTarget(ctx.in.tcp_pose);
-    holding_ = true;
-  }
+  // the robot carries it: hold still, not following the object's estimate,
+  // which still moves with the person's (leaving) hand until the release is confirmed
+  if (!holding_ && share_ >= 0.0) hold(ctx);
   // the person's hand is still on it; after release_wait with the whole load, let it be
   if (share_ >= 0.0 && hand_seen && hand_tcp - hand_start_ < distance_ && ctx.time - carry_since_ < wait_) {
     since_ = -1.0;

@@ -99,7 +99,7 @@ class Grasp : public HandoverState {
   double last_width_ = 0.0, last_time_ = 0.0, finger_speed_ = 0.0;
 };
 
-/// [Released] Follows the grasp frame until the person lets go, for
+/// [Released] Follows, then holds, the grasp pose until the person lets go, for
 /// hold_time: the robot's load share (HandoverInput::load_share) reaches
 /// release_share and the person's hand has moved release_distance farther
 /// from the TCP than when the state started (a stale hand: the share alone;
@@ -110,9 +110,17 @@ class Grasp : public HandoverState {
 /// Why both: while the person's grip is rigid the load on the wrist is
 /// whatever the robot pushes (the load share follows the robot's own
 /// payload), so the load alone cannot tell that the person let go; the hand
-/// leaving can. With release_share, the TCP is held still from the moment
-/// the robot carries the load (the object estimate still follows the
-/// person's hand until the release is confirmed).
+/// leaving can.
+/// While the person holds the object the TCP follows it (its estimate moves
+/// with their hand: no force builds against a hand that still moves; held
+/// still from the start, a hand rising 2 cm as the fingers closed was pushed
+/// on with 10 N, and the object fell 2.4 cm when they let go). From the first
+/// moment the robot carries the load (load share >= release_share) the TCP is
+/// held still, not following the estimate (it still moves with the person's
+/// leaving hand until the release is confirmed, and dragged the object down
+/// with it), at the stiffness the grasp aligned with (params.tracking.align):
+/// at the pose task's K = 6 (18 N/m for the arm) half a newton the model
+/// missed as the weight came over sank the object by 2-3 cm.
 /// Keys: release_share (0..1) with release_distance (m) and release_wait
 /// (s), or release_fraction (0..2); hold_time (s).
 class WaitForRelease : public HandoverState {
@@ -126,7 +134,9 @@ class WaitForRelease : public HandoverState {
   int released_;
   double fraction_ = 0.7, hold_time_ = 0.1;
   double share_ = -1.0;  ///< release_share; < 0: the force rule
-  bool holding_ = false; ///< the robot carries the load: holding the TCP, not following
+  bool holding_ = false; ///< the robot carries the load: holding the TCP still (stiffly), not following
+  /// Holds the TCP where it is, as stiffly as the grasp aligned it.
+  void hold(HandoverContext& ctx);
   double distance_ = 0.0;   ///< release_distance, m
   double wait_ = 3.5;       ///< release_wait, s
   double carry_since_ = -1.0;  ///< s, since when the robot carries the load

@@ -55,6 +55,7 @@ void sendPosture(ControllerInterface& ctl, const H& t, const ScopedCommands& v) 
 }
 void sendSpeedScale(ControllerInterface& ctl, const H&, const ScopedCommands& v) { ctl.setSpeedScale(v.speed_scale); }
 void sendGains(ControllerInterface& ctl, const H& t, const ScopedCommands& v) { ctl.setTaskGains(t.tracking, v.gains); }
+void sendPoseGains(ControllerInterface& ctl, const H& t, const ScopedCommands& v) { ctl.setTaskGains(t.pose, v.pose_gains); }
 void sendHandClearance(ControllerInterface& ctl, const H&, const ScopedCommands& v) {
   ctl.relaxHandClearance(v.hand_clearance_relaxed);
 }
@@ -82,6 +83,7 @@ constexpr ChannelEntry kTable[] = {
     row<&S::hand_clearance_relaxed>(Channel::kHandClearance, "hand_clearance", &sendHandClearance),
     row<&S::task_switches>(Channel::kTaskSwitches, "task_switches", &sendTaskSwitches),
     row<&S::anticipate_rest>(Channel::kAnticipation, "anticipate_rest", &sendAnticipation),
+    row<&S::pose_gains>(Channel::kPoseGains, "pose_gains", &sendPoseGains),
 };
 static_assert(sizeof(kTable) / sizeof(kTable[0]) == kNumChannels, "one row per channel");
 

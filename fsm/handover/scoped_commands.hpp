@@ -27,7 +27,8 @@ struct PostureCommand {
   bool active = false;
   Vector7 q = Vector7::Zero();  ///< rad, the 7 arm joints in chain order
 };
-/// The tracking task's phase gains (inactive: the configured ones).
+/// A task's phase gains (inactive: the configured ones): the tracking
+/// task's (gains) and the pose task's (pose_gains).
 using GainsCommand = TaskGains;
 /// Tasks a state switched on or off by handle (handles 0..31), beyond those
 /// with a channel of their own (tracking, pose): bit i of `mask` says task i
@@ -63,6 +64,7 @@ struct ScopedCommands {
   bool hand_clearance_relaxed = false;
   TaskSwitches task_switches;
   bool anticipate_rest = false;  ///< targets where the person's reach will end
+  GainsCommand pose_gains;       ///< the pose task's (e.g. a stiff hold while the person lets go)
 };
 
 /// Every channel compared through the table.
@@ -81,6 +83,7 @@ enum class Channel : std::uint8_t {
   kHandClearance,
   kTaskSwitches,
   kAnticipation,
+  kPoseGains,
   kCount
 };
 constexpr std::size_t kNumChannels = static_cast<std::size_t>(Channel::kCount);

@@ -35,6 +35,8 @@ struct RecordingController : ControllerInterface {
   double speed = 1.0;
   bool gains_active = false;     // values only (not in `calls`)
   double gains_translation = 0.0, gains_orientation = 0.0;  // 1/s^2, when gains_active
+  bool pose_gains_active = false;  // the pose task's, values only
+  double pose_gains_translation = 0.0;
   bool hand_relaxed = false;     // values only (not in `calls`)
   bool anticipate = false;
   double gripper_width = 0.08;
@@ -90,6 +92,11 @@ struct RecordingController : ControllerInterface {
     }
   }
   void setTaskGains(int task, const TaskGains& g) override {
+    if (task == 1) {
+      pose_gains_active = g.active;
+      pose_gains_translation = g.translation;
+      return;
+    }
     if (task != 0) return;
     gains_active = g.active;
     gains_translation = g.translation;

@@ -61,9 +61,11 @@ TEST(ControllerHandle, EveryStateLeavesNothingBehind) {
   rig.world.moveHand(Vector3(0.55, 0.0, 0.30), 0.5);
   ASSERT_TRUE(rig.runUntilState("WaitForRelease", 10.0));
   const ScopedCommands& cur = rig.fsm->context().ledger->current();
-  EXPECT_TRUE(cur.tracking);
+  EXPECT_TRUE(cur.tracking);  // WaitForRelease follows the object the person still holds
   EXPECT_EQ(cur.observation, ObservationTarget::kObject);
+  EXPECT_TRUE(cur.hand_clearance_relaxed);
   rig.fsm->stop();
+  EXPECT_EQ(cur, ScopedCommands()) << channelDifferences(cur, ScopedCommands());
   EXPECT_FALSE(cur.tracking);
   EXPECT_EQ(cur.observation, ObservationTarget::kNone);
   EXPECT_FALSE(cur.pose.active);

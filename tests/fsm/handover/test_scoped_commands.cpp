@@ -30,6 +30,9 @@ ScopedCommands allChanged() {
   v.task_switches.mask = 1u << 3;  // a task beyond tracking, pose and posture, switched on
   v.task_switches.on = 1u << 3;
   v.anticipate_rest = true;
+  v.pose_gains.active = true;
+  v.pose_gains.translation = 60.0;
+  v.pose_gains.orientation = 120.0;
   return v;
 }
 
@@ -48,6 +51,7 @@ void changeThroughHandle(ControllerHandle& h, Channel c) {
     case Channel::kHandClearance: h.relaxHandClearance(v.hand_clearance_relaxed); break;
     case Channel::kTaskSwitches: h.setTaskEnabled(3, true); break;
     case Channel::kAnticipation: h.anticipateRest(v.anticipate_rest); break;
+    case Channel::kPoseGains: h.setPoseStiffness(v.pose_gains.translation, v.pose_gains.orientation); break;
     case Channel::kCount: break;
   }
 }
