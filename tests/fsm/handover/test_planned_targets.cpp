@@ -63,6 +63,9 @@ void takeUntilRetract(Rig& rig) {
     }
   };
   ASSERT_TRUE(rig.runUntilState("Retract", 20.0)) << rig.fsm->activePath();
+  // past the lift-off: the carry has posted its request (and, with the
+  // planning stage on, the state has taken the answer)
+  ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->context().carry.request().id > 0; }, 2.0));
   rig.step();
 }
 
