@@ -55,6 +55,7 @@ void Retract::configure(const YamlReader& def) {
   if (auto lift = def.optionalChild("lift_off")) {
     lift_distance_ = readPositive(*lift, "distance", 0.3);
     lift_elevation_ = readPositive(*lift, "elevation_deg", 90.0) * kDeg;
+    lift_tolerance_ = readPositive(*lift, "tolerance", lift_distance_);
     lift_max_time_ = readPositive(*lift, "max_time", 5.0);
   }
 }
@@ -90,10 +91,10 @@ void Retract::onStart(HandoverContext& ctx) {
 
 bool Retract::onRun(HandoverContext& ctx) {
   if (lifting_) {
-    // half-way, the carry takes over from a TCP still moving up and back:
-    // no stop between the two
+    // within `tolerance` of the lift-off point the carry takes over from a TCP
+    // still moving up and back: no stop between the two
     const double lifted = (ctx.in.tcp_pose.translation() - lift_from_).dot(lift_direction_);
-    if (lifted < 0.5 * lift_distance_ && elapsed(ctx) < lift_max_time_) return false;
+    if (lifted < lift_distance_ - lift_tolerance_ && elapsed(ctx) < lift_max_time_) return false;
     lifting_ = false;
     carry_.start(ctx, ctrl(), named_goal_, up_axis_);
   }

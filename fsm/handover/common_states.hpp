@@ -34,10 +34,10 @@ class Rest : public HandoverState {
 /// is present (held_object_goal.hpp: the placement is asked for at the start
 /// and adopted once answered). Keys: pose, position_tolerance (m),
 /// orientation_tolerance_deg, settle_speed (m/s), keep_yaw (bool), lift_off
-/// (optional, after a take: {distance: m, elevation_deg, max_time: s}; with
-/// the object held, the TCP first moves `distance` along liftOffDirection
-/// (lift_off.hpp), orientation held, and the carry starts half-way there or
-/// after max_time, whichever is first).
+/// (optional, after a take: {distance: m, elevation_deg, tolerance: m,
+/// max_time: s}; with the object held, the TCP first moves `distance` along
+/// liftOffDirection (lift_off.hpp), orientation held, and the carry starts
+/// within `tolerance` of that point or after max_time, whichever is first).
 class Retract : public HandoverState {
  public:
   Retract();
@@ -53,7 +53,7 @@ class Retract : public HandoverState {
   bool keep_yaw_ = false;               ///< keep the TCP's turn about the vertical
   HeldObjectCarry carry_;               ///< the named pose, or an upright placement of a held object near it
   // the lift-off (lift_off.hpp); distance 0 = none
-  double lift_distance_ = 0.0, lift_elevation_ = 0.0, lift_max_time_ = 0.0;
+  double lift_distance_ = 0.0, lift_elevation_ = 0.0, lift_tolerance_ = 0.0, lift_max_time_ = 0.0;
   bool lifting_ = false;
   Vector3 lift_from_ = Vector3::Zero(), lift_direction_ = Vector3::Zero();
   Isometry named_goal_ = Isometry::Identity();  ///< the carry's named pose, kept while lifting

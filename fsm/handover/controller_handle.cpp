@@ -106,12 +106,15 @@ void ControllerHandle::undo() {
   touched_ = 0;
 }
 
-void ControllerHandle::setTrackingStiffness(double translation, double orientation) {
+void ControllerHandle::setStiffness(Channel c, GainsCommand ScopedCommands::*gains, double translation,
+                                    double orientation) {
   ScopedCommands next = ledger_->current();
-  next.gains.active = true;
-  next.gains.translation = translation;
-  next.gains.orientation = orientation;
-  change(Channel::kGains, next);
+  (next.*gains) = GainsCommand{true, translation, orientation};
+  change(c, next);
+}
+
+void ControllerHandle::setTrackingStiffness(double translation, double orientation) {
+  setStiffness(Channel::kGains, &ScopedCommands::gains, translation, orientation);
 }
 
 void ControllerHandle::clearTrackingStiffness() {
@@ -121,11 +124,7 @@ void ControllerHandle::clearTrackingStiffness() {
 }
 
 void ControllerHandle::setPoseStiffness(double translation, double orientation) {
-  ScopedCommands next = ledger_->current();
-  next.pose_gains.active = true;
-  next.pose_gains.translation = translation;
-  next.pose_gains.orientation = orientation;
-  change(Channel::kPoseGains, next);
+  setStiffness(Channel::kPoseGains, &ScopedCommands::pose_gains, translation, orientation);
 }
 
 void ControllerHandle::setTaskEnabled(int task, bool on) {

@@ -94,6 +94,8 @@ class ControllerHandle {
  private:
   /// Saves the ledger's value of `c` on first touch, then applies `next`.
   void change(Channel c, const ScopedCommands& next);
+  /// Activates the gains member `gains` (channel `c`) with these stiffnesses.
+  void setStiffness(Channel c, GainsCommand ScopedCommands::*gains, double translation, double orientation);
   CommandLedger* ledger_ = nullptr;
   ScopedCommands saved_;
   std::uint32_t touched_ = 0;

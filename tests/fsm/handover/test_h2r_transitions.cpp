@@ -301,18 +301,18 @@ TEST(HandoverH2R, TheObjectIsLiftedOffTheHandBeforeTheCarryLowersIt) {
         15.0));
     EXPECT_STREQ(rig.fsm->stats().outcome, "success");
     EXPECT_LT((rig.world.tcp.translation() - rig.fsm->params().stow_pose.translation()).norm(), 0.03);
-    // half the lift-off's 0.10 m at 45 degrees or more: 3.5 cm up before the carry takes over
+    // 0.075 of the lift-off's 0.10 m at 45 degrees or more: 5 cm up before the carry takes over
     if (risen_before_lowering >= 0.0) {
-      EXPECT_GT(risen_before_lowering, 0.03) << "lowered before lifting the object off the hand";
+      EXPECT_GT(risen_before_lowering, 0.05) << "lowered before lifting the object off the hand";
     } else {
-      EXPECT_GT(highest, z0 + 0.03) << "no lift-off";
+      EXPECT_GT(highest, z0 + 0.05) << "no lift-off";
     }
   }
 }
 
 // While the robot holds the object and waits for the person to let go, the
 // pose task holds the grasp pose as stiffly as the grasp aligned it: at the
-// configured K = 6 (18 N/m for the arm's 3 kg) half a newton the model
+// configured K = 6 (K times the arm's task-space inertia: some tens of N/m) half a newton the model
 // missed as the weight came over sank the object by 2-3 cm.
 TEST(HandoverH2R, TheGraspPoseIsHeldStifflyUntilThePersonLetsGo) {
   Rig rig;
