@@ -119,8 +119,9 @@ class Grasp : public HandoverState {
 /// held still, not following the estimate (it still moves with the person's
 /// leaving hand until the release is confirmed, and dragged the object down
 /// with it), at the stiffness the grasp aligned with (params.tracking.align):
-/// at the pose task's K = 6 (times the arm's task-space inertia: tens of N/m) half a newton the model
-/// missed as the weight came over sank the object by 2-3 cm.
+/// at the pose task's K = 6 (times the arm's task-space inertia: tens of
+/// N/m) half a newton the model missed as the weight came over sank the
+/// object by 2-3 cm.
 /// Keys: release_share (0..1) with release_distance (m) and release_wait
 /// (s), or release_fraction (0..2); hold_time (s).
 class WaitForRelease : public HandoverState {

@@ -312,8 +312,9 @@ TEST(HandoverH2R, TheObjectIsLiftedOffTheHandBeforeTheCarryLowersIt) {
 
 // While the robot holds the object and waits for the person to let go, the
 // pose task holds the grasp pose as stiffly as the grasp aligned it: at the
-// configured K = 6 (K times the arm's task-space inertia: some tens of N/m) half a newton the model
-// missed as the weight came over sank the object by 2-3 cm.
+// configured K = 6 (times the arm's task-space inertia: some tens of N/m)
+// half a newton the model missed as the weight came over sank the object by
+// 2-3 cm.
 TEST(HandoverH2R, TheGraspPoseIsHeldStifflyUntilThePersonLetsGo) {
   Rig rig;
   rig.world.moveHand(kMeet, 0.5);
