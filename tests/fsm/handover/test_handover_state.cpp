@@ -35,16 +35,17 @@ void forEachStateDef(const YamlReader& states, const std::string& prefix, const 
 /// The controller's view of the scoped channels that RecordingController keeps.
 struct ControllerView {
   ObservationTarget observation;
-  bool tracking, pose_active, posture_active, gains_active, hand_relaxed;
+  bool tracking, pose_active, posture_active, gains_active, hand_relaxed, pose_gains_active;
   double speed;
   Isometry offset, pose;
   static ControllerView of(const RecordingController& c) {
     return {c.observation, c.tracking, c.pose_active, c.posture_active, c.gains_active, c.hand_relaxed,
-            c.speed, c.offset, c.pose};
+            c.pose_gains_active, c.speed, c.offset, c.pose};
   }
   bool operator==(const ControllerView& o) const {
     return observation == o.observation && tracking == o.tracking && pose_active == o.pose_active &&
            posture_active == o.posture_active && gains_active == o.gains_active && hand_relaxed == o.hand_relaxed &&
+           pose_gains_active == o.pose_gains_active &&
            speed == o.speed && offset.matrix() == o.offset.matrix() &&
            (!pose_active || pose.matrix() == o.pose.matrix());  // a cleared target's value means nothing
   }
@@ -63,6 +64,7 @@ void changeEverything(ControllerHandle& parent) {
   parent.setPostureTarget(Vector7::Constant(0.1));
   parent.setSpeedScale(0.5);
   parent.setTrackingStiffness(3.0, 5.0);
+  parent.setPoseStiffness(20.0, 40.0);
   parent.relaxHandClearance(true);
 }
 
