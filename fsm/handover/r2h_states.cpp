@@ -98,7 +98,16 @@ bool Present::onRun(HandoverContext& ctx) {
     since_ = -1.0;
     return false;
   }
-  if (since_ < 0.0) since_ = ctx.time;
+  // and the receiver's hand at rest over the settle window: DetectPull holds
+  // still, and held still against a hand still moving (0.1-0.2 m/s) the
+  // object was pushed along with it, 2 cm before anything counted as a pull.
+  // Its displacement over the window, not its speed: the perceived speed
+  // under sensing noise never stayed below the tolerance (a give aborted)
+  const Vector3 hand = ctx.in.hand.pose.translation();
+  if (since_ < 0.0 || (hand - hand_at_since_).norm() > speed_tol_ * settle_time_) {
+    since_ = ctx.time;
+    hand_at_since_ = hand;
+  }
   if (ctx.time - since_ < settle_time_) return false;
   setOutput(presented_);
   return true;

@@ -33,7 +33,8 @@ class HoldReady : public HandoverState {
 
 /// [Presented, Withdrawn] Tracks the presentation frame (still relative to
 /// the hand) until position, orientation and relative speed errors stay within
-/// tolerance for settle_time. Keys: position_tolerance (m),
+/// tolerance, and the receiver's hand within speed_tolerance * settle_time
+/// of where it was, for settle_time. Keys: position_tolerance (m),
 /// orientation_tolerance_deg, speed_tolerance (m/s), settle_time (s);
 /// lift_speed (m/s, optional): the approach's descent onto the palm ends,
 /// its shift going to zero at that speed (presentation_descent.hpp); the
@@ -51,6 +52,7 @@ class Present : public HandoverState {
   double pull_threshold_ = 0.0, pull_hold_ = 0.05;  ///< N (0 = off), s
   double lift_speed_ = 0.4;                         ///< m/s (presentation_descent.hpp)
   double since_ = -1.0, pull_since_ = -1.0, last_time_ = 0.0;
+  Vector3 hand_at_since_ = Vector3::Zero();  ///< the receiver's hand when the settle window began
 };
 
 /// [Pulled] Holds the TCP still and records the filtered force (object and

@@ -75,6 +75,21 @@ TEST(HandoverR2H, WaitingForThePullHoldsAtThePresentationPoseNotShortOfIt) {
   EXPECT_LT(rotationError(rig.ctl.pose, in.target_pose), 0.01);
 }
 
+// DetectPull holds still: begun while the receiver's hand still crept on
+// (0.1-0.2 m/s, settling), the held object was pushed along with it by 2 cm
+// before anything counted as a pull. The presentation waits for the hand to
+// rest over the settle window.
+TEST(HandoverR2H, TheObjectIsPresentedToAHandAtRestNotToOneStillMoving) {
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+  rig.world.moveHand(kReceive, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Present", 20.0)) << rig.fsm->activePath();
+  const Vector3 settled = kReceive + Vector3(0.0, 0.12, 0.0);
+  rig.world.moveHand(settled, 0.1);  // creeps on for 1.2 s
+  ASSERT_TRUE(rig.runUntilState("DetectPull", 10.0)) << rig.fsm->activePath();
+  EXPECT_LT((rig.world.hand - settled).norm(), 1e-9) << "waits for the pull while the hand still moves";
+}
+
 // A receiver's hand above the arm: brought straight up to the presentation,
 // the gripper came from below and stopped under the person's hand (side
 // presentations of a ball stalled 11 cm short: the collision rows hold it
