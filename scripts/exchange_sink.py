@@ -4,8 +4,8 @@
 The release is the first moment after the fingers start closing (gripper_cmd
 drops below its open value), on a grasp the state machine confirms, when the
 person's hand has moved more than 1 cm relative to the object, compared with
-that closing moment. The sink is the
-largest drop of the object's true height (object_z) in the 1.0 s after it.
+that closing moment. The sink is the largest drop of the object's true height
+(object_z) in the 1.0 s after it.
 Also reports, for robot-to-human runs, the TCP's largest displacement between
 the pull's onset (the person's hand, at rest once the robot waits for the
 pull, moves by 2 mm) and the fingers opening past the object, and within the
@@ -68,7 +68,7 @@ def h2r_sink(rows, window=1.0, moved=0.01):
     return None
 
 
-def r2h_pull(rows, moved=0.01):
+def r2h_pull(rows):
     t = col(rows, "time")
     width = col(rows, "finger_width")
     cmd = col(rows, "gripper_cmd")

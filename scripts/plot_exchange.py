@@ -27,10 +27,6 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import exchange_sink  # noqa: E402
 
 
-def series(rows, name):
-    return [float(r[name]) for r in rows]
-
-
 def release_time(rows):
     r = exchange_sink.h2r_sink(rows)
     return None if r is None else r["release_time"]
@@ -43,33 +39,32 @@ def pull_time(rows):
 
 def draw(kind, before, after, out, labels=("before", "after")):
     fig, axes = plt.subplots(3, 1, figsize=(8, 8), sharex=True)
+    ax2 = axes[1].twinx()  # the grip force beside the load share
     for label, path, style in ((labels[0], before, "--"), (labels[1], after, "-")):
         rows = exchange_sink.load(path)
         t0 = release_time(rows) if kind == "release" else pull_time(rows)
         if t0 is None:
             print(f"{path}: no {kind} found", file=sys.stderr)
             return 1
-        t = [x - t0 for x in series(rows, "time")]
+        t = [x - t0 for x in exchange_sink.col(rows, "time")]
         lo, hi = (-1.0, 2.5) if kind == "release" else (-0.5, 0.5)
         keep = [i for i, x in enumerate(t) if lo <= x <= hi]
         tt = [t[i] for i in keep]
         i0 = min(range(len(t)), key=lambda i: abs(t[i]))
         if kind == "release":
-            z = series(rows, "object_z")
+            z = exchange_sink.col(rows, "object_z")
             axes[0].plot(tt, [1000 * (z[i] - z[i0]) for i in keep], style, label=f"object height, {label}")
         else:
-            p = [(float(r["tcp_x"]), float(r["tcp_y"]), float(r["tcp_z"])) for r in rows]
+            p = list(zip(*(exchange_sink.col(rows, "tcp_" + a) for a in "xyz")))
             axes[0].plot(tt, [1000 * math.dist(p[i], p[i0]) for i in keep], style, label=f"TCP displacement, {label}")
-        share = series(rows, "load_share")
-        grip = series(rows, "grip_force")
+        share = exchange_sink.col(rows, "load_share")
+        grip = exchange_sink.col(rows, "grip_force")
         axes[1].plot(tt, [share[i] for i in keep], style, label=f"load share, {label}")
-        ax2 = axes[1].twinx() if path is before else ax2
         ax2.plot(tt, [grip[i] for i in keep], style, color="tab:red", alpha=0.6, label=f"grip force, {label}")
-        fz = series(rows, "load_fz")
+        fz = exchange_sink.col(rows, "load_fz")
         axes[2].plot(tt, [fz[i] for i in keep], style, label=f"wrist load, vertical, {label}")
     limit = 10 if kind == "release" else 20
-    for sign in ((-1,) if kind == "release" else (1,)):
-        axes[0].axhline(sign * limit, color="grey", lw=0.8, ls=":")
+    axes[0].axhline(-limit if kind == "release" else limit, color="grey", lw=0.8, ls=":")  # a sink is down
     axes[0].set_ylabel("mm")
     axes[0].set_title(f"{'Release: the person lets go' if kind == 'release' else 'Pull: the receiver takes the object'}"
                       f" (t = 0), dotted: {limit} mm")
