@@ -66,7 +66,7 @@ struct HandoverContext : Context {
   bool force_valid = false;                      ///< at least one finite sample filtered
   Vector3 force_before_grasp = Vector3::Zero();  ///< filtered force when the fingers started closing (h2r)
   Vector3 force_holding = Vector3::Zero();       ///< filtered force while presenting the object (r2h)
-  /// Filtered HandoverInput::interaction_force (same filter as `force`), N, world
+  /// HandoverInput::interaction_force (filtered by the estimator, not again here), N, world
   Vector3 interaction = Vector3::Zero();
   Vector3 interaction_holding = Vector3::Zero();  ///< `interaction` as presenting started (r2h pull tests)
 

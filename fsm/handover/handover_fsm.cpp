@@ -120,19 +120,20 @@ void HandoverFsm::sanitise(const HandoverInput& in) {
     ctx_.in.target_velocity = previous.target_velocity;
     bad = true;
   }
-  // wrist force: low-pass in world axes; skip non-finite samples
+  // wrist force: low-pass in world axes; skip non-finite samples. The
+  // interaction force comes filtered (ContactWrenchEstimator, 10 ms): a
+  // second, slower filter here told a fast pull 50 ms late, 1-2 cm into it
   const Vector3 f = in.ft_rotation * in.wrench.head<3>();
   if (f.allFinite() && in.interaction_force.allFinite()) {
     const double dt = ctx_.force_valid ? std::max(0.0, ctx_.in.time - last_time_) : 0.0;
     const double tau = params_.ft_filter_tau;
     if (!ctx_.force_valid || tau <= 0.0) {
       ctx_.force = f;
-      ctx_.interaction = in.interaction_force;
       ctx_.force_valid = true;
     } else {
       ctx_.force += (dt / (tau + dt)) * (f - ctx_.force);
-      ctx_.interaction += (dt / (tau + dt)) * (in.interaction_force - ctx_.interaction);
     }
+    ctx_.interaction = in.interaction_force;
   } else {
     bad = true;
   }

@@ -2,10 +2,12 @@
 // object handed to the robot does not sink when the person lets go, and a
 // 1 kg object given to a person is held still while the receiver pulls and
 // let go only then. Measured from the run's own log.csv as
-// scripts/exchange_sink.py does (docs/method.md, "The physical exchange").
+// scripts/exchange_sink.py does (docs/method.md, "The physical exchange");
+// and a fast pull from the benchmark is answered within 2 cm.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 
 #include <Eigen/Core>
@@ -38,6 +40,41 @@ app::RunSummary runWithMass(const ScratchDir& dir, const std::string& name, doub
   const app::RunSummary s = app::runScenario(scenario::parseScenario(copy), opt);
   log = testing::readCsv(opt.out_dir + "/log.csv");
   return s;
+}
+
+/// How far the TCP moved from the pull's onset (the hand, at rest while the
+/// robot waits for the pull, moves 2 mm) until the fingers opened past the
+/// object, m; `felt`: the pull began before the fingers opened.
+struct PullMeasure {
+  double moved = 0.0;
+  bool felt = false;
+};
+
+PullMeasure measurePull(const app::RunSummary& s, const CsvTable& log) {
+  const auto& states = s.states;
+  const auto pull = std::find_if(states.begin(), states.end(),
+                                 [](const std::string& p) { return p.find("DetectPull") != std::string::npos; });
+  const auto release = std::find_if(states.begin(), states.end(),
+                                    [](const std::string& p) { return p.find("/Release") != std::string::npos; });
+  if (pull == states.end() || release == states.end()) throw std::runtime_error("no DetectPull and Release");
+  if (pull - states.begin() > release - states.begin()) throw std::runtime_error("released before a pull");
+  std::size_t start = 0;
+  while (start < log.rows.size() && log.rows[start][1].find("DetectPull") == std::string::npos) ++start;
+  if (start == log.rows.size()) throw std::runtime_error("no DetectPull in log.csv");
+  std::size_t onset = start;
+  while (onset < log.rows.size() && (point(log, onset, "hand_") - point(log, start, "hand_")).norm() <= 0.002)
+    ++onset;
+  if (onset == log.rows.size()) throw std::runtime_error("the receiver never pulled");
+  const double width0 = log.number(start, "finger_width");
+  PullMeasure m;
+  std::size_t r = onset;  // up to the first sample with the fingers opened past the object, inclusive
+  for (; r < log.rows.size(); ++r) {
+    m.moved = std::max(m.moved, (point(log, r, "tcp_") - point(log, onset, "tcp_")).norm());
+    if (log.number(r, "finger_width") > width0 + 0.005) break;
+  }
+  if (r == log.rows.size()) throw std::runtime_error("the fingers never opened");
+  m.felt = r > onset + 1;
+  return m;
 }
 
 TEST(PhysicalExchange, OneKilogramDoesNotSinkWhenThePersonLetsGo) {
@@ -73,33 +110,32 @@ TEST(PhysicalExchange, OneKilogramIsHeldStillWhileTheReceiverPulls) {
   CsvTable log;
   const app::RunSummary s = runWithMass(dir, "r2h_basic", 1.0, log);
   EXPECT_EQ(s.outcome, "success");
-  const auto& states = s.states;
-  const auto pull = std::find_if(states.begin(), states.end(),
-                                 [](const std::string& p) { return p.find("DetectPull") != std::string::npos; });
-  const auto release = std::find_if(states.begin(), states.end(),
-                                    [](const std::string& p) { return p.find("/Release") != std::string::npos; });
-  ASSERT_NE(pull, states.end());
-  ASSERT_NE(release, states.end());
-  EXPECT_LT(pull - states.begin(), release - states.begin()) << "released before a pull";
-  // from the pull's onset (the hand, at rest while the robot waits, moves 2 mm) to the fingers opening
-  std::size_t start = 0;
-  while (start < log.rows.size() && log.rows[start][1].find("DetectPull") == std::string::npos) ++start;
-  ASSERT_LT(start, log.rows.size());
-  std::size_t onset = start;
-  while (onset < log.rows.size() && (point(log, onset, "hand_") - point(log, start, "hand_")).norm() <= 0.002)
-    ++onset;
-  ASSERT_LT(onset, log.rows.size()) << "the receiver never pulled";
-  const double width0 = log.number(start, "finger_width");
-  double moved = 0.0;
-  std::size_t r = onset;
-  for (; r < log.rows.size() && log.number(r, "finger_width") <= width0 + 0.005; ++r)
-    moved = std::max(moved, (point(log, r, "tcp_") - point(log, onset, "tcp_")).norm());
-  ASSERT_LT(r, log.rows.size()) << "the fingers never opened";
-  EXPECT_LE(moved, 0.02) << "the TCP moved " << moved << " m during the pull";
+  const PullMeasure m = measurePull(s, log);
+  EXPECT_LE(m.moved, 0.02) << "the TCP moved " << m.moved << " m during the pull";
   // the pull is felt (the arm is not a wall) when it began before the fingers
   // opened; a receiver who takes the object's weight in the palm is released
   // to before moving at all
-  if (r > onset + 1) EXPECT_GT(moved, 0.0);
+  if (m.felt) EXPECT_GT(m.moved, 0.0);
+}
+
+// A fast pull from the benchmark (tests/app/run/data/r2h_fast_pull.yaml:
+// 14.6 cm in 0.4 s, 0.7 m/s at its peak). The scripted hand moves as
+// scripted whatever the arm does, so the TCP goes with it until the fingers
+// open: the pull must be told within about a centimetre. Read through a
+// second, slower filter (the estimator's 10 ms, then 50 ms) it was told
+// 15 mm in and the TCP had moved 21.5 mm when the fingers let go.
+TEST(PhysicalExchange, AFastPullIsAnsweredWithinTwoCentimetres) {
+  ScratchDir dir("exchange_fast_pull");
+  app::RunOptions opt;
+  opt.out_dir = dir.file("out");
+  opt.plots = false;
+  const app::RunSummary s =
+      app::runScenario(scenario::parseScenario(testing::repoPath("tests/app/run/data/r2h_fast_pull.yaml")), opt);
+  const CsvTable log = testing::readCsv(opt.out_dir + "/log.csv");
+  EXPECT_EQ(s.outcome, "success");
+  const PullMeasure m = measurePull(s, log);
+  EXPECT_LE(m.moved, 0.02) << "the TCP moved " << m.moved << " m during the pull";
+  EXPECT_TRUE(m.felt) << "the fingers opened before the hand moved";
 }
 
 }  // namespace
