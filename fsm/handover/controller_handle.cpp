@@ -117,15 +117,19 @@ void ControllerHandle::setTrackingStiffness(double translation, double orientati
   setStiffness(Channel::kGains, &ScopedCommands::gains, translation, orientation);
 }
 
-void ControllerHandle::clearTrackingStiffness() {
+void ControllerHandle::clearStiffness(Channel c, GainsCommand ScopedCommands::*gains) {
   ScopedCommands next = ledger_->current();
-  next.gains.active = false;
-  change(Channel::kGains, next);
+  (next.*gains).active = false;
+  change(c, next);
 }
+
+void ControllerHandle::clearTrackingStiffness() { clearStiffness(Channel::kGains, &ScopedCommands::gains); }
 
 void ControllerHandle::setPoseStiffness(double translation, double orientation) {
   setStiffness(Channel::kPoseGains, &ScopedCommands::pose_gains, translation, orientation);
 }
+
+void ControllerHandle::clearPoseStiffness() { clearStiffness(Channel::kPoseGains, &ScopedCommands::pose_gains); }
 
 void ControllerHandle::setTaskEnabled(int task, bool on) {
   if (task < 0 || task >= 32 || task == ledger_->tasks().tracking || task == ledger_->tasks().pose) {

@@ -66,6 +66,8 @@ class ControllerHandle {
   void clearTrackingStiffness();
   /// The pose task's stiffnesses (1/s^2, critically damped) for this state.
   void setPoseStiffness(double translation, double orientation);
+  /// Back to the pose task's configured stiffnesses.
+  void clearPoseStiffness();
   void relaxHandClearance(bool relaxed);
   /// Targets where the person's reach will end (ControllerInterface::anticipateRest).
   void anticipateRest(bool on);
@@ -96,6 +98,8 @@ class ControllerHandle {
   void change(Channel c, const ScopedCommands& next);
   /// Activates the gains member `gains` (channel `c`) with these stiffnesses.
   void setStiffness(Channel c, GainsCommand ScopedCommands::*gains, double translation, double orientation);
+  /// Deactivates it: the task's configured stiffnesses again.
+  void clearStiffness(Channel c, GainsCommand ScopedCommands::*gains);
   CommandLedger* ledger_ = nullptr;
   ScopedCommands saved_;
   std::uint32_t touched_ = 0;

@@ -194,6 +194,7 @@ void WaitForRelease::configure(const YamlReader& def) {
     share_ = readRange(def, "release_share", 0.05, 1.0);
     distance_ = readRange(def, "release_distance", 0.0, 0.3);
     wait_ = readRange(def, "release_wait", 0.0, 60.0);
+    hold_share_ = def.has("hold_share") ? readRange(def, "hold_share", 0.05, share_) : share_;
     if (def.has("release_fraction")) def.child("release_fraction").fail("give release_share or release_fraction, not both");
   } else if (def.has("release_fraction")) {
     fraction_ = readPositive(def, "release_fraction", 2.0);
@@ -227,17 +228,27 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   const double weight = ctx.object.mass * ctx.params->gravity;
   const bool carries = share_ >= 0.0 ? ctx.in.load_share >= share_
                                      : ctx.addedWeight(ctx.force_before_grasp) >= fraction_ * weight;
+  // the robot bears most of the weight: hold still, not following the
+  // object's estimate, which moves with the person's (leaving) hand and with
+  // the object as it sinks. Held only once the whole load had come over, the
+  // TCP followed the sinking object for the 0.1 s the share took to climb
+  // from half to release_share (2 cm, g1_00538). The person takes most of it
+  // back (the share falls below half of hold_share): follow again
+  if (share_ >= 0.0) {
+    if (!holding_ && ctx.in.load_share >= hold_share_) {
+      hold(ctx);
+    } else if (holding_ && ctx.in.load_share < 0.5 * hold_share_) {
+      ctrl().clearPoseStiffness();
+      trackTarget(ctx, ctrl(), false);
+      holding_ = false;
+    }
+  }
   if (!carries) {
-    if (holding_) trackTarget(ctx, ctrl(), false);  // the person took it back: follow again
-    holding_ = false;
     since_ = carry_since_ = -1.0;
     return false;
   }
   if (since_ < 0.0) since_ = ctx.time;
   if (carry_since_ < 0.0) carry_since_ = ctx.time;
-  // the robot carries it: hold still, not following the object's estimate,
-  // which still moves with the person's (leaving) hand until the release is confirmed
-  if (!holding_ && share_ >= 0.0) hold(ctx);
   // the person's hand is still on it; after release_wait with the whole load, let it be
   if (share_ >= 0.0 && hand_seen && hand_tcp - hand_start_ < distance_ && ctx.time - carry_since_ < wait_) {
     since_ = -1.0;

@@ -135,6 +135,7 @@ class WaitForRelease : public HandoverState {
   int released_;
   double fraction_ = 0.7, hold_time_ = 0.1;
   double share_ = -1.0;  ///< release_share; < 0: the force rule
+  double hold_share_ = 1.0;  ///< hold_share (<= release_share): the load share from which the TCP is held still
   bool holding_ = false; ///< the robot carries the load: holding the TCP still (stiffly), not following
   /// Holds the TCP where it is, as stiffly as the grasp aligned it.
   void hold(HandoverContext& ctx);

@@ -161,6 +161,7 @@ struct World {
   double last_sample = 0.0;
   bool hand_open = true;
   bool arm_stuck = false;   // the arm cannot move (a joint at its limit, a person in the way)
+  double share = -1.0;      // >= 0: the load share the estimator reports while the fingers hold (a weight coming over)
   TrackingPlan object_plan;  // what a grasp planner would report (invalid: none)
   TrackingPlan hand_plan;
 
@@ -240,6 +241,7 @@ struct World {
     if (robot_grip) f += inertia;  // the estimator's interaction force takes it out again
     in.wrench.head<3>() = f;
     in.load_share = robot_carries ? 1.0 : 0.0;  // what control::ContactWrenchEstimator would report
+    if (robot_grip && share >= 0.0) in.load_share = share;
     // beyond the tool and the whole object (the estimator's interaction force): the
     // person's support while they carry it, their pull while both hold it
     if (robot_grip) in.interaction_force = Vector3(0, 0, robot_carries ? 0.0 : mass * 9.81) + (person_holds ? pull : Vector3::Zero());
