@@ -115,15 +115,17 @@ class Grasp : public HandoverState {
 /// with their hand: no force builds against a hand that still moves; held
 /// still from the start, a hand rising 2 cm as the fingers closed was pushed
 /// on with 10 N, and the object fell 2.4 cm when they let go). From the first
-/// moment the robot carries the load (load share >= release_share) the TCP is
+/// moment the robot bears most of the load (load share >= hold_share, at most
+/// release_share; below half of hold_share it follows again) the TCP is
 /// held still, not following the estimate (it still moves with the person's
 /// leaving hand until the release is confirmed, and dragged the object down
 /// with it), at the stiffness the grasp aligned with (params.tracking.align):
 /// at the pose task's K = 6 (times the arm's task-space inertia: tens of
 /// N/m) half a newton the model missed as the weight came over sank the
 /// object by 2-3 cm.
-/// Keys: release_share (0..1) with release_distance (m) and release_wait
-/// (s), or release_fraction (0..2); hold_time (s).
+/// Keys: release_share (0..1) with release_distance (m), release_wait
+/// (s) and hold_share (0.05..release_share, default release_share), or
+/// release_fraction (0..2); hold_time (s).
 class WaitForRelease : public HandoverState {
  public:
   WaitForRelease();
