@@ -229,7 +229,13 @@ void HandoverCycle::assembleInput(double t, const io::ArmState& arm, const perce
   // the previous Controller::step's kinematics
   in.tcp_pose = controller_.tcpPose();
   in.tcp_velocity = controller_.tcpVelocity();
-  in.ft_rotation = control::framePlacement(controller_.model(), controller_.data(), ft_frame_).linear();
+  const control::Isometry ft = control::framePlacement(controller_.model(), controller_.data(), ft_frame_);
+  in.ft_rotation = ft.linear();
+  // the load's torque moved from the sensor to the TCP: tau_tcp = tau_sensor - (p_tcp - p_sensor) x f
+  const control::Vector6& load = contact_.load();
+  in.tool_contact.head<3>() = load.head<3>();
+  in.tool_contact.tail<3>() =
+      load.tail<3>() - (in.tcp_pose.translation() - ft.translation()).cross(load.head<3>());
   in.load_share = contact_.loadShare();
   in.interaction_force = contact_.interactionForce();
   // this cycle's perception

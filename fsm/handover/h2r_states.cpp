@@ -135,19 +135,58 @@ void Grasp::configure(const YamlReader& def) {
     standoff_speed_ = readPositive(def, "standoff_speed", 1.0);
     funnel_margin_ = readRange(def, "funnel_margin", 0.0, 1.0);
   }
+  if (def.has("touch_force")) {
+    touch_force_ = readRange(def, "touch_force", 0.0, 100.0);
+    touch_time_ = readRange(def, "touch_time", 0.0, 1.0);
+    max_touches_ = static_cast<int>(readRange(def, "max_touches", 0.0, 10.0));
+  }
 }
 
 void Grasp::onStart(HandoverContext& ctx) {
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   closing_ = false;
   funnel_time_ = ctx.time;
+  touches_ = 0;
+  touch_since_ = -1.0;
+  touch_felt_ = false;
+  touch_shift_.setZero();
   trackTarget(ctx, ctrl(), false, std::min(ctx.tracking_standoff, funnelStandoff(fitNow(ctx), max_standoff_, funnel_margin_)),
               TrackingGains::kAlign);
 }
 
+Isometry Grasp::correctedGraspFrame(const HandoverContext& ctx) const {
+  Isometry g = trackedGraspFrame(ctx);
+  g.translation() += ctx.in.observed_pose.linear() * touch_shift_;
+  return g;
+}
+
 FingerFit Grasp::fitNow(const HandoverContext& ctx) const {
-  return fingerFit(ctx.in.tcp_pose, ctx.in.observed_pose, trackedGraspFrame(ctx), ctx.object.shape,
+  Isometry object = ctx.in.observed_pose;
+  object.translation() += object.linear() * touch_shift_;
+  return fingerFit(ctx.in.tcp_pose, object, correctedGraspFrame(ctx), ctx.object.shape,
                    ctx.params->gripper_open_width, ctx.params->finger_half_span);
+}
+
+void Grasp::feelTouch(HandoverContext& ctx, const FingerFit& f) {
+  const Eigen::Matrix3d& tcp = ctx.in.tcp_pose.linear();
+  // the contact pushes the gripper back against its approach axis (z); a force p at
+  // a along the closing axis (y) turns it about x by -a p
+  const double push = -ctx.in.tool_contact.head<3>().dot(tcp.col(2));
+  if (push < touch_force_) {
+    touch_since_ = -1.0;
+    if (push < 0.5 * touch_force_) touch_felt_ = false;  // the push ended: a new one is a new touch
+    return;
+  }
+  if (touch_since_ < 0.0) touch_since_ = ctx.time;
+  if (touch_felt_ || touches_ >= max_touches_ || ctx.time - touch_since_ < touch_time_) return;
+  touch_felt_ = true;
+  const double lever = -ctx.in.tool_contact.tail<3>().dot(tcp.col(0)) / push;
+  // on the palm between the fingers (|lever| small) the object is in: no side to correct
+  if (std::abs(lever) < 0.25 * ctx.params->gripper_open_width || f.clearance > 1e6) return;
+  ++touches_;
+  const Vector3 toward = (lever > 0.0 ? 1.0 : -1.0) * f.clearance * tcp.col(1);
+  touch_shift_ += ctx.in.observed_pose.linear().transpose() * toward;
+  setStandoff(ctx, ctrl(), false, ctx.tracking_standoff, touch_shift_);
 }
 
 bool Grasp::onRun(HandoverContext& ctx) {
@@ -157,15 +196,16 @@ bool Grasp::onRun(HandoverContext& ctx) {
       return true;
     }
     setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kAlign, ctx.in.object.velocity.head<3>().norm());
+    if (touch_force_ > 0.0) feelTouch(ctx, fitNow(ctx));
     const FingerFit f = fitNow(ctx);
     // the funnel's standoff, reached at standoff_speed (the fit is as noisy as the object's pose)
     const double step = standoff_speed_ * std::max(0.0, ctx.time - funnel_time_);
     funnel_time_ = ctx.time;
     const double now = ctx.tracking_standoff;
     const double standoff = now + std::clamp(funnelStandoff(f, max_standoff_, funnel_margin_) - now, -step, step);
-    if (standoff != now) setStandoff(ctx, ctrl(), false, standoff);
+    if (standoff != now) setStandoff(ctx, ctrl(), false, standoff, touch_shift_);
     // closes only on an object between the fingers (the funnel's last part)
-    if (f.fit <= 0.0 || positionError(ctx.in.tcp_pose, trackedGraspFrame(ctx)) > pos_tol_ ||
+    if (f.fit <= 0.0 || positionError(ctx.in.tcp_pose, correctedGraspFrame(ctx)) > pos_tol_ ||
         !alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_))
       return false;
     ctx.force_before_grasp = ctx.force;  // reference for the release test
@@ -210,7 +250,9 @@ void WaitForRelease::onStart(HandoverContext& ctx) {
   holding_ = false;
   hand_start_ = -1.0;
   carry_since_ = -1.0;
-  trackTarget(ctx, ctrl(), false);  // follow the object while the person still holds it
+  // follow the object while the person still holds it, where the fingers closed on it
+  // (the grasp as Grasp corrected it by touch: ctx.tracking_shift)
+  trackTarget(ctx, ctrl(), false, 0.0, TrackingGains::kFollow, ctx.tracking_shift);
 }
 
 void WaitForRelease::hold(HandoverContext& ctx) {
@@ -239,7 +281,7 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
       hold(ctx);
     } else if (holding_ && ctx.in.load_share < 0.5 * hold_share_) {
       ctrl().clearPoseStiffness();
-      trackTarget(ctx, ctrl(), false);
+      trackTarget(ctx, ctrl(), false, 0.0, TrackingGains::kFollow, ctx.tracking_shift);
       holding_ = false;
     }
   }

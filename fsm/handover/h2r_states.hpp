@@ -73,10 +73,19 @@ class Approach : public HandoverState {
 /// to `standoff` along the approach axis while the object does not fit
 /// between the open fingers, all the way in once it does; it closes only
 /// with the object between the fingers.
+/// Felt, not only seen: a fingertip that lands on the object (the pose
+/// sensor off by more than the fingers' clearance) pushes the gripper back
+/// along its approach axis, and the wrist wrench's torque about the TCP tells
+/// which finger it is. The object then lies farther toward that finger than
+/// the sensor says: the grasp is corrected by the clearance toward it (the
+/// middle of what can be off while one finger still lands), the funnel backs
+/// the fingers off and slides them in again. Not more than max_touches times
+/// per attempt.
 /// Keys: position_tolerance (m), orientation_tolerance_deg, speed_tolerance
 /// (m/s), confirm_time (s), stall_speed (m/s), min_width (m), standoff (m,
 /// optional, default 0: no funnel) with standoff_speed (m/s) and
-/// funnel_margin (share of the clearance, 0..1).
+/// funnel_margin (share of the clearance, 0..1); touch_force (N, optional,
+/// default 0: no correction) with touch_time (s) and max_touches.
 class Grasp : public HandoverState {
  public:
   Grasp();
@@ -86,6 +95,10 @@ class Grasp : public HandoverState {
 
  private:
   FingerFit fitNow(const HandoverContext& ctx) const;
+  /// The grasp frame corrected by what the fingers felt (world).
+  Isometry correctedGraspFrame(const HandoverContext& ctx) const;
+  /// A fingertip on the object: corrects the grasp toward it. RT safe.
+  void feelTouch(HandoverContext& ctx, const FingerFit& f);
 
   int grasped_, missed_, withdrawn_;
   double pos_tol_ = 0.01, rot_tol_ = 0.17, speed_tol_ = 0.05, confirm_time_ = 0.3, min_width_ = 0.005;
@@ -97,6 +110,13 @@ class Grasp : public HandoverState {
   bool closing_ = false;
   double closed_at_ = 0.0;
   double last_width_ = 0.0, last_time_ = 0.0, finger_speed_ = 0.0;
+  double touch_force_ = 0.0;     ///< N, push along the approach axis that is a touch (0: off)
+  double touch_time_ = 0.05;     ///< s, for this long
+  int max_touches_ = 2;
+  int touches_ = 0;
+  double touch_since_ = -1.0;    ///< s, the push began; < 0: none
+  bool touch_felt_ = false;      ///< this push was answered (waits for it to end)
+  Vector3 touch_shift_ = Vector3::Zero();  ///< m, the grasp's correction, object frame
 };
 
 /// [Released] Follows, then holds, the grasp pose until the person lets go, for

@@ -50,6 +50,11 @@ struct HandoverInput {
   /// one cycle old): what the person adds. A pull reads here, not the arm's
   /// braking with the object.
   Vector3 interaction_force = Vector3::Zero();
+  /// What touches the gripper beyond the tool (ContactWrenchEstimator::load,
+  /// one cycle old): [force (N); torque (N m) about the TCP], world axes.
+  /// With the fingers open it is the contact of a finger or the palm on the
+  /// object: where along the closing axis it pushes tells which finger.
+  Vector6 tool_contact = Vector6::Zero();
 
   // perception
   SensedBody hand;          ///< the person's hand (grip point frame, design notes 1)

@@ -3,6 +3,7 @@
 // a dropped object that was really a robot that could not see.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -107,6 +108,37 @@ TEST(SensingFaults, ShippedSensingScenariosSucceed) {
     EXPECT_TRUE(r.expectation_failures.empty()) << name << ": " << r.expectation_failures.front();
     EXPECT_EQ(r.rejected_samples, 0) << name;
   }
+}
+
+// a sensor offset larger than the fingers' clearance: the left fingertip lands on the box
+// (the benchmark's g1_00035). Felt through the wrist, the grasp moves toward that finger
+// and the first attempt closes, where the gripper used to push on the box until Grasp
+// timed out, twice, and the person gave up
+TEST(SensingFaults, AFingertipThatLandsOnTheObjectIsFeltAndTheGraspMovesOver) {
+  testing::ScratchDir dir("finger_lands");
+  app::RunOptions opt;
+  opt.out_dir = dir.file("out");
+  opt.plots = false;
+  const app::RunSummary r =
+      app::runScenario(scenario::parseScenario(testing::repoPath("tests/app/run/data/h2r_finger_lands.yaml")), opt);
+  EXPECT_EQ(r.outcome, "success");
+  const auto count = [&r](const std::string& state) {
+    return std::count_if(r.states.begin(), r.states.end(),
+                         [&state](const std::string& s) { return s.size() >= state.size() && s.compare(s.size() - state.size(), state.size(), state) == 0; });
+  };
+  EXPECT_EQ(count("/Grasp"), 1) << "the grasp needed another attempt";
+  EXPECT_EQ(count("/RetreatOpen"), 0);
+  // closed within 2 s of entering Grasp, not at its 5 s timeout
+  const testing::CsvTable log = testing::readCsv(opt.out_dir + "/log.csv");
+  double grasp_start = -1.0, closed = -1.0;
+  for (std::size_t i = 0; i < log.rows.size(); ++i) {
+    const bool in_grasp = log.rows[i][1].find("/Grasp") != std::string::npos;
+    if (in_grasp && grasp_start < 0.0) grasp_start = log.number(i, "time");
+    if (in_grasp && closed < 0.0 && log.number(i, "gripper_cmd") < 0.01) closed = log.number(i, "time");
+  }
+  ASSERT_GE(grasp_start, 0.0);
+  ASSERT_GE(closed, 0.0) << "the fingers never closed in Grasp";
+  EXPECT_LE(closed - grasp_start, 2.0);
 }
 
 }  // namespace

@@ -162,6 +162,7 @@ struct World {
   bool hand_open = true;
   bool arm_stuck = false;   // the arm cannot move (a joint at its limit, a person in the way)
   double share = -1.0;      // >= 0: the load share the estimator reports while the fingers hold (a weight coming over)
+  Vector6 tool_contact = Vector6::Zero();  // what touches the gripper: [force; torque about the TCP], world
   TrackingPlan object_plan;  // what a grasp planner would report (invalid: none)
   TrackingPlan hand_plan;
 
@@ -261,6 +262,7 @@ struct World {
       in.object.rest_pose = in.object.pose;
       if (person_holds) in.object.rest_pose.translation() += hand_goal - hand;
     }
+    in.tool_contact = tool_contact;
     in.hand_open = hand_open;
     in.hand_distance = human_distance;
     in.arm_distance = arm_distance;
@@ -289,9 +291,12 @@ struct Rig {
   /// as runtime::HandoverCycle does; false: the test answers when it wants.
   bool plan_stage = true;
   /// anticipate_reach: the shipped table with params.tracking.anticipate_reach on.
-  explicit Rig(bool robot_starts_with_object = false, bool anticipate_reach = false) {
+  /// shape: the object's (unknown: the gripper slides straight in).
+  explicit Rig(bool robot_starts_with_object = false, bool anticipate_reach = false,
+               const io::ObjectShape& shape = io::ObjectShape{}) {
     ObjectInfo obj;
     obj.mass = world.mass;
+    obj.shape = shape;
     if (anticipate_reach) {
       YAML::Node doc = YAML::LoadFile(HandoverFsm::defaultConfigPath());
       doc["params"]["tracking"]["anticipate_reach"] = true;

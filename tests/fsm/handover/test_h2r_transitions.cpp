@@ -69,6 +69,53 @@ TEST(HandoverH2R, GraspClosesOnlyWhenAligned) {
   EXPECT_LE((in.tcp_velocity.head<3>() - in.target_velocity.head<3>()).norm(), 0.051);
 }
 
+// What the wrist feels when something pushes the gripper back along its
+// approach axis with `push` (N) at `along` (m) on its closing axis.
+Vector6 touchAt(const Isometry& tcp, double along, double push) {
+  const Vector3 f = -push * tcp.linear().col(2);
+  Vector6 w;
+  w.head<3>() = f;
+  w.tail<3>() = (along * tcp.linear().col(1)).cross(f);
+  return w;
+}
+
+TEST(HandoverH2R, AFingertipFeltOnTheObjectMovesTheGraspTowardIt) {
+  io::ObjectShape box;
+  box.kind = io::ObjectShape::Kind::kBox;
+  box.size = Vector3(0.05, 0.05, 0.10);  // 15 mm to spare on each side of the open fingers
+  Rig rig(false, false, box);
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
+  rig.world.arm_stuck = true;  // held back by what it touches: no closing meanwhile
+  const Vector3 closing = rig.world.tcp.linear().col(1);
+  const auto shift = [&] { return (rig.world.objectPose().linear() * rig.ctl.offset.translation()).dot(closing); };
+  const double before = shift();
+  const auto touch = [&](double along) {
+    rig.world.tool_contact = touchAt(rig.world.tcp, along, 10.0);
+    rig.runFor(0.1);
+    rig.world.tool_contact.setZero();
+    rig.runFor(0.05);
+  };
+  touch(0.0);  // on the palm, between the fingers: the object is in, nothing to correct
+  EXPECT_NEAR(shift(), before, 1e-9);
+  touch(0.035);  // the +y finger: the object lies farther that way
+  EXPECT_NEAR(shift(), before + 0.015, 1e-6);
+  touch(-0.035);  // then the other finger: back
+  EXPECT_NEAR(shift(), before, 1e-6);
+  touch(0.035);  // max_touches (2) answered: the rest is the timeout's
+  EXPECT_NEAR(shift(), before, 1e-6);
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Grasp"));
+  // a push too light to be a touch is not one
+  Rig light(false, false, box);
+  light.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(light.runUntilState("Grasp", 10.0));
+  light.world.arm_stuck = true;
+  const double light_before = (light.world.objectPose().linear() * light.ctl.offset.translation()).dot(closing);
+  light.world.tool_contact = touchAt(light.world.tcp, 0.035, 2.0);
+  light.runFor(0.2);
+  EXPECT_NEAR((light.world.objectPose().linear() * light.ctl.offset.translation()).dot(closing), light_before, 1e-9);
+}
+
 TEST(HandoverH2R, WithdrawDuringApproachRetreatsAndRetries) {
   Rig rig;
   rig.world.moveHand(kMeet, 0.5);

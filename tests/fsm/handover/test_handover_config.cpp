@@ -105,6 +105,10 @@ TEST(HandoverConfig, TakeGainsAndTheGraspFunnel) {
   EXPECT_NE(msg.find("funnel_margin"), std::string::npos) << msg;
   msg = loadError(replaced(shipped(), "finger_half_span: 0.012", "finger_half_span: -0.01"));
   EXPECT_NE(msg.find("params.gripper.finger_half_span"), std::string::npos) << msg;
+  msg = loadError(replaced(shipped(), "touch_force: 5.0", "touch_force: -5.0"));
+  EXPECT_NE(msg.find("touch_force"), std::string::npos) << msg;
+  msg = loadError(replaced(shipped(), "max_touches: 2", "max_touches: 20"));
+  EXPECT_NE(msg.find("max_touches"), std::string::npos) << msg;
 }
 
 TEST(HandoverConfig, MissingThresholdIsAnError) {
