@@ -34,10 +34,13 @@ void SafetyStop::configure(const YamlReader& def) {
   clear_distance_ = readPositive(def, "clear_distance", 2.0);
   clear_time_ = readRange(def, "clear_time", 0.0, 10.0);
   if (def.has("grasp_zone_radius")) grasp_zone_ = readRange(def, "grasp_zone_radius", 0.0, 1.0);
+  if (def.has("yield_after")) yield_after_ = readRange(def, "yield_after", 0.0, 60.0);
 }
 
 void SafetyStop::onStart(HandoverContext& ctx) {
   since_ = -1.0;
+  stopped_at_ = ctx.time;
+  yielding_ = false;
   ++ctx.stats.safety_stops;
   ctrl().enableTracking(false);
   ctrl().setPoseTarget(ctx.in.tcp_pose);
@@ -46,6 +49,12 @@ void SafetyStop::onStart(HandoverContext& ctx) {
 bool SafetyStop::onRun(HandoverContext& ctx) {
   if (personTooClose(ctx, clear_distance_, grasp_zone_)) {
     since_ = -1.0;
+    if (!yielding_ && yield_after_ >= 0.0 && ctx.time - stopped_at_ >= yield_after_) {
+      Isometry back = ctx.in.tcp_pose;
+      back.translation() = ctx.params->safe_pose.translation();
+      ctrl().setPoseTarget(back);
+      yielding_ = true;
+    }
     return false;
   }
   if (since_ < 0.0) since_ = ctx.time;

@@ -28,8 +28,14 @@ class HumanTooClose : public Condition {
 /// [Clear] Preempting stop: tracking off, TCP held where it is, until the
 /// person is no longer too close (personTooClose with clear_distance and
 /// grasp_zone_radius) for clear_time. Counts the stop. The gripper is not
-/// touched. Keys: clear_distance (m), clear_time (s), grasp_zone_radius (m,
-/// optional, 0.15).
+/// touched. With yield_after, a person still too close after that long
+/// stopped is given room: the TCP backs off toward params.poses.safe's
+/// position, keeping its orientation, until they are clear. (Held still, a
+/// receiver whose hand waited beside the wrist for the object and a robot
+/// waiting for that hand to go stayed so until the run's end.) The collision
+/// constraints stay on while it backs off.
+/// Keys: clear_distance (m), clear_time (s), grasp_zone_radius (m,
+/// optional, 0.15), yield_after (s, optional: never).
 class SafetyStop : public HandoverState {
  public:
   SafetyStop();
@@ -40,7 +46,10 @@ class SafetyStop : public HandoverState {
  private:
   int clear_;
   double clear_distance_ = 0.2, clear_time_ = 0.5, grasp_zone_ = 0.15;
+  double yield_after_ = -1.0;  ///< s, < 0: never
   double since_ = -1.0;
+  double stopped_at_ = 0.0;
+  bool yielding_ = false;
 };
 
 /// Overlay: scales the controller's speed while active; its teardown puts

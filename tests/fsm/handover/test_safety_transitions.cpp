@@ -53,6 +53,31 @@ TEST(HandoverSafety, TooCloseStopsTearsDownAndResumes) {
   EXPECT_TRUE(marked);
 }
 
+// a person who stays too close is given room: after yield_after (1 s) of stop
+// the TCP backs off toward the safe pose's position, keeping its orientation
+TEST(HandoverSafety, APersonWhoStaysTooCloseIsGivenRoom) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("/Approach", 5.0));
+  const Vector3 safe = rig.fsm->params().safe_pose.translation();
+  ASSERT_TRUE(rig.runUntil([&] { return (rig.world.tcp.translation() - safe).norm() > 0.15; }, 5.0));
+  rig.world.arm_distance = 0.02;
+  rig.step();
+  ASSERT_EQ(rig.fsm->activePath(), "SafetyStop");
+  const Isometry stopped = rig.ctl.pose;
+  rig.runFor(0.8);
+  EXPECT_LT((rig.ctl.pose.translation() - stopped.translation()).norm(), 1e-9);  // held at first
+  EXPECT_LT(rig.world.tcp_vel.norm(), 0.05);
+  const double before = (rig.world.tcp.translation() - safe).norm();
+  rig.runFor(0.5);
+  EXPECT_EQ(rig.fsm->activePath(), "SafetyStop");
+  EXPECT_LT((rig.ctl.pose.translation() - safe).norm(), 1e-9);
+  EXPECT_TRUE(rig.ctl.pose.linear().isApprox(stopped.linear()));
+  EXPECT_LT((rig.world.tcp.translation() - safe).norm(), before - 0.05);  // on its way back
+  rig.world.arm_distance = 1.0;
+  EXPECT_TRUE(rig.runUntilState("/Approach", 2.0));  // clear: the handover resumes
+}
+
 TEST(HandoverSafety, HandInGraspZoneIsNotAnIntrusion) {
   Rig rig;
   rig.world.moveHand(kMeet, 0.5);
