@@ -39,7 +39,23 @@ double armClearance(const Model& model, const ChainPoses& poses, const ObstacleC
     const Vector3 a = X * c.a, b = X * c.b;
     for (int k = 0; k < num_obstacles; ++k) {
       const ObstacleCapsule& o = obstacles[k];
+      if (o.gripper_works_here && c.role == CapsuleRole::kFingertip) continue;
       best = std::min(best, segmentDistance(a, b, o.a, o.b) - c.radius - o.radius);
+    }
+  }
+  return best;
+}
+
+double workZoneClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
+                         int num_obstacles) {
+  double best = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < num_obstacles; ++k) {
+    const ObstacleCapsule& o = obstacles[k];
+    if (!o.gripper_works_here) continue;
+    for (const Capsule& c : model.capsules) {
+      if (c.role == CapsuleRole::kFingertip) continue;
+      const Isometry& X = poses.oMb[c.body];
+      best = std::min(best, segmentDistance(X * c.a, X * c.b, o.a, o.b) - c.radius - o.radius);
     }
   }
   return best;

@@ -14,15 +14,30 @@ struct ObstacleCapsule {
   Vector3 a = Vector3::Zero();  ///< m, world
   Vector3 b = Vector3::Zero();  ///< m, world
   double radius = 0.0;          ///< m
+  /// The fingers work here (the person's hand that holds the object): the
+  /// fingertip capsules (CapsuleRole::kFingertip), which close around the
+  /// object in it, are not measured against it; the palm and the arm are.
+  /// Counted against the fingers too, it was the nearest obstacle of every
+  /// grasp in the hand and hid how close each put the palm to the hand.
+  bool gripper_works_here = false;
 };
 
 /// Smallest distance between the segments [p0, p1] and [q0, q1] (m).
 double segmentDistance(const Vector3& p0, const Vector3& p1, const Vector3& q0, const Vector3& q1);
 
 /// Smallest surface distance between any of the model's capsules posed by
-/// `poses` and any obstacle (m, negative when they overlap); +infinity
+/// `poses` and any obstacle (m, negative when they overlap), the fingertip
+/// capsules left out against an obstacle where the fingers work; +infinity
 /// without obstacles.
 double armClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles, int num_obstacles);
+
+/// Smallest surface distance between the capsules that do not close on the
+/// object (the arm and the palm: every role but CapsuleRole::kFingertip) and
+/// the obstacles where the fingers work (ObstacleCapsule::gripper_works_here),
+/// m; +infinity without such obstacles. Negative: the palm or the arm would
+/// sit in the person's hand at that grasp.
+double workZoneClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
+                         int num_obstacles);
 
 /// Lowest point (world z, m) of the capsules of bodies `first_body`.. (the
 /// base and link 1 stand on the table and are left out with first_body = 2).

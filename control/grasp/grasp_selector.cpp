@@ -45,6 +45,10 @@ bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, 
   const ScoreTerms pre = scoreConfiguration(model_, frame_, poses, p.q, q_now, obstacles, num_obstacles, config_.score);
   chainPoses(model_, g.q, poses);
   if (lowestArmPoint(model_, poses) < floor) return false;
+  // only the fingers go around the object in the person's hand: a grasp that puts the palm
+  // (or the arm) in that hand is no grasp (a ball on the palm taken from the side: the palm
+  // struck the hand under it)
+  if (workZoneClearance(model_, poses, obstacles, num_obstacles) < 0.0) return false;
   ScoreTerms t = scoreConfiguration(model_, frame_, poses, g.q, q_now, obstacles, num_obstacles, config_.score);
   // the arm must pass the pre-grasp too: the worse margin and clearance count
   t.joint_margin = std::min(t.joint_margin, pre.joint_margin);

@@ -27,7 +27,12 @@ bool ObjectLost::evaluate(Context& context) {
   held_width_ = std::max(held_width_, h.in.finger_width);
   const bool fingers_closed_in = h.in.finger_width < held_width_ - width_drop_;
   const bool hand_away = !h.in.hand.valid || positionError(h.in.hand.pose, h.in.tcp_pose) > hand_clearance_;
-  const bool weight_gone = hand_away && h.in.load_share < min_share_;
+  // the weight is gone when nothing loads the gripper any more: the load's whole force, not
+  // its vertical share alone (a push on the held object from below or aside, the arm meeting
+  // something, took the share to 0 with the object still between the fingers, g1_00505)
+  const double weight = h.object.mass * h.params->gravity;
+  const bool weight_gone = hand_away && h.in.load_share < min_share_ &&
+                           h.in.tool_contact.head<3>().norm() < min_share_ * weight;
   if (!fingers_closed_in && !weight_gone) {
     since_ = -1.0;
     return false;

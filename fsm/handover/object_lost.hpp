@@ -13,8 +13,9 @@ namespace handover::fsm {
 ///  - the fingers have closed by more than width_drop (m) below the widest
 ///    opening seen while holding: the object slid out from between them, or
 ///  - the person's hand is farther than hand_clearance (m) from the TCP (so
-///    nobody else carries it) and the robot's load share is below min_share:
-///    the weight left the gripper.
+///    nobody else carries it) and the robot's load share is below min_share,
+///    with the whole load force below min_share of the weight too: the
+///    weight left the gripper (a push on the object only turned it).
 /// Keys: width_drop (m), min_share (0..1), hand_clearance (m), hold_time (s).
 /// RT safe.
 class ObjectLost : public Condition {

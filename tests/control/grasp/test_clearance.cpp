@@ -64,6 +64,35 @@ TEST(Clearance, ArmClearanceIsTheNearestCapsuleSurface) {
   EXPECT_GT(far.total, near.total);
 }
 
+// the person's hand where the fingers work: the fingertip capsule closing
+// around the object in it is not measured against it, the palm and the arm are
+TEST(Clearance, TheHandWhereTheFingersWorkCountsOnlyAgainstThePalmAndTheArm) {
+  const Model& model = testing::panda();
+  ChainPoses poses;
+  chainPoses(model, testing::readyConfiguration(), poses);
+  const Isometry tcp = chainFramePose(model, poses, model.frameId("tcp"));
+  // a hand sphere 3 cm below the TCP (gripper pointing down): inside the fingertip capsule's
+  // reach, clear of the palm
+  ObstacleCapsule hand{tcp.translation() - Vector3(0, 0, 0.03), tcp.translation() - Vector3(0, 0, 0.03), 0.02};
+  const double any = armClearance(model, poses, &hand, 1);
+  EXPECT_LT(any, 0.0);  // the fingertip capsule overlaps it
+  EXPECT_EQ(workZoneClearance(model, poses, &hand, 1), std::numeric_limits<double>::infinity());  // not a work zone
+  hand.gripper_works_here = true;
+  const double palm = workZoneClearance(model, poses, &hand, 1);
+  EXPECT_GT(palm, 0.0);
+  EXPECT_GT(armClearance(model, poses, &hand, 1), 0.0);
+  double expected = std::numeric_limits<double>::infinity();
+  for (const Capsule& c : model.capsules) {
+    if (c.role == CapsuleRole::kFingertip) continue;
+    const Vector3 a = poses.oMb[c.body] * c.a, b = poses.oMb[c.body] * c.b;
+    expected = std::min(expected, sampledDistance(a, b, hand.a, hand.b) - c.radius - hand.radius);
+  }
+  EXPECT_NEAR(palm, expected, 3e-3);
+  // moved up into the palm: a negative work-zone clearance
+  hand.a = hand.b = tcp.translation() + Vector3(0, 0, 0.05);
+  EXPECT_LT(workZoneClearance(model, poses, &hand, 1), 0.0);
+}
+
 TEST(Scores, ManipulabilityVanishesAtTheStretchedSingularity) {
   const Model& model = testing::panda();
   ChainPoses poses;

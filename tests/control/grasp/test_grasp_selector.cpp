@@ -8,6 +8,7 @@
 
 #include "control/grasp/chain_kinematics.hpp"
 #include "control/grasp/grasp_selector.hpp"
+#include "control/grasp/shape_grasps.hpp"
 #include "tests/control/grasp/panda_fixture.hpp"
 #include "tests/support/units.hpp"
 
@@ -243,6 +244,38 @@ TEST(GraspSelector, AvoidsAnObstacleNearTheBestGraspConfiguration) {
   const double d_old = armClearance(model, poses, &forearm, 1);
   EXPECT_GT(d_new, d_old + 0.02);
   EXPECT_GT(c.score.total, totalScore(free_choice.score, testing::shippedConfig().score) - 1.0);
+}
+
+// a ball resting on a palm held out palm up, declared to be taken from the side: every side
+// grasp puts the gripper's palm into the person's hand under the ball, so the selection takes
+// it with a grasp that keeps the palm out of the hand (from above), however much the
+// declared grasp is preferred
+TEST(GraspSelector, ABallOnAPalmIsNotTakenWithTheGrippersPalmInTheHand) {
+  const Model& model = testing::panda();
+  std::vector<GraspSpec> specs = shapeGraspSpecs(PrimitiveShape::kSphere, {0.0255});
+  ASSERT_EQ(specs.size(), 3u);
+  GraspSpec side = bottleSideGrasp();
+  side.preference = 10.0;  // declared, and preferred beyond any score difference
+  specs.push_back(side);
+  GraspSelector selector(model, specs, testing::shippedConfig());
+  const Isometry X_obj = bottleAt(Vector3(0.55, 0.0, 0.30));
+  ObstacleCapsule hand{X_obj.translation() - Vector3(0, 0, 0.04), X_obj.translation() - Vector3(0, 0, 0.04), 0.045};
+  const GraspChoice& free_choice = selector.update(X_obj, testing::readyConfiguration());
+  ASSERT_TRUE(free_choice.valid);
+  EXPECT_NEAR(free_choice.grasp.linear().col(2).z(), 0.0, 1e-9);  // without the hand: the declared side grasp
+  hand.gripper_works_here = true;
+  selector.reset();
+  const GraspChoice& c = selector.update(X_obj, testing::readyConfiguration(), &hand, 1);
+  ASSERT_TRUE(c.valid);
+  EXPECT_LT(c.grasp.linear().col(2).z(), -0.5);  // approaching from above
+  ChainPoses poses;
+  chainPoses(model, c.q_grasp, poses);
+  EXPECT_GE(workZoneClearance(model, poses, &hand, 1), 0.0);
+  for (const CandidateEvaluation& e : selector.evaluations()) {
+    if (!e.feasible) continue;
+    chainPoses(model, e.q_grasp, poses);
+    EXPECT_GE(workZoneClearance(model, poses, &hand, 1), 0.0);
+  }
 }
 
 TEST(GraspSelector, ReportsNoChoiceForAnObjectOutOfReach) {

@@ -262,7 +262,8 @@ struct World {
       in.object.rest_pose = in.object.pose;
       if (person_holds) in.object.rest_pose.translation() += hand_goal - hand;
     }
-    in.tool_contact = tool_contact;
+    in.tool_contact = tool_contact;  // and the weight the robot carries (the estimator's load)
+    if (robot_carries) in.tool_contact.z() -= mass * 9.81;
     in.hand_open = hand_open;
     in.hand_distance = human_distance;
     in.arm_distance = arm_distance;

@@ -53,6 +53,22 @@ TEST(ObjectLost, WeightLeavingTheGripperEndsInLost) {
   EXPECT_STREQ(rig.fsm->stats().outcome, "failed");
 }
 
+// a push on the held object from below and aside: the vertical share reads 0,
+// but the gripper still carries the object's weight's worth of force
+TEST(ObjectLost, APushOnTheHeldObjectIsNotALoss) {
+  Rig rig;
+  takeUntilRetract(rig);
+  rig.world.share = 0.0;
+  rig.world.tool_contact.head<3>() = Vector3(-0.7, -0.7, 0.4) * rig.world.mass * 9.81 + Vector3(0, 0, rig.world.mass * 9.81);
+  rig.runFor(0.5);
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Retract")) << rig.fsm->activePath();
+  // the same share with nothing on the gripper is the weight gone
+  rig.world.tool_contact.setZero();
+  rig.world.mass = 0.0;  // the fake estimator's load: nothing
+  ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 1.0)) << rig.fsm->activePath();
+  EXPECT_EQ(rig.fsm->activePath(), "Lost");
+}
+
 TEST(ObjectLost, HeldObjectIsNotLost) {
   Rig rig;
   takeUntilRetract(rig);
