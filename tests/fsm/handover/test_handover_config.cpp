@@ -109,6 +109,8 @@ TEST(HandoverConfig, TakeGainsAndTheGraspFunnel) {
   EXPECT_NE(msg.find("touch_force"), std::string::npos) << msg;
   msg = loadError(replaced(shipped(), "max_touches: 2", "max_touches: 20"));
   EXPECT_NE(msg.find("max_touches"), std::string::npos) << msg;
+  msg = loadError(replaced(shipped(), "yield_after: 1.0", "yield_after: -1.0"));
+  EXPECT_NE(msg.find("yield_after"), std::string::npos) << msg;
 }
 
 TEST(HandoverConfig, MissingThresholdIsAnError) {
