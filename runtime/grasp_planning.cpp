@@ -72,7 +72,7 @@ int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool 
   obstacles_[1] = capsule(human.upper_arm, settings_.upper_arm_length, settings_.upper_arm_radius);
   if (!with_hand) return 2;
   obstacles_[2] = capsule(human.hand, 0.0, settings_.hand_radius);
-  obstacles_[2].gripper_works_here = true;  // the grasp is in it: the forearm is what the gripper must keep from
+  obstacles_[2].gripper_works_here = true;  // the fingers work in it; the palm and the arm keep clear
   return 3;
 }
 

@@ -167,7 +167,7 @@ FingerFit Grasp::fitNow(const HandoverContext& ctx) const {
                    ctx.params->gripper_open_width, ctx.params->finger_half_span);
 }
 
-void Grasp::feelTouch(HandoverContext& ctx, const FingerFit& f) {
+bool Grasp::feelTouch(HandoverContext& ctx, const FingerFit& f) {
   const Eigen::Matrix3d& tcp = ctx.in.tcp_pose.linear();
   // the contact pushes the gripper back against its approach axis (z); a force p at
   // a along the closing axis (y) turns it about x by -a p
@@ -175,18 +175,19 @@ void Grasp::feelTouch(HandoverContext& ctx, const FingerFit& f) {
   if (push < touch_force_) {
     touch_since_ = -1.0;
     if (push < 0.5 * touch_force_) touch_felt_ = false;  // the push ended: a new one is a new touch
-    return;
+    return false;
   }
   if (touch_since_ < 0.0) touch_since_ = ctx.time;
-  if (touch_felt_ || touches_ >= max_touches_ || ctx.time - touch_since_ < touch_time_) return;
+  if (touch_felt_ || touches_ >= max_touches_ || ctx.time - touch_since_ < touch_time_) return false;
   touch_felt_ = true;
   const double lever = -ctx.in.tool_contact.tail<3>().dot(tcp.col(0)) / push;
   // on the palm between the fingers (|lever| small) the object is in: no side to correct
-  if (std::abs(lever) < 0.25 * ctx.params->gripper_open_width || f.clearance > 1e6) return;
+  if (std::abs(lever) < 0.25 * ctx.params->gripper_open_width || f.clearance > 1e6) return false;
   ++touches_;
   const Vector3 toward = (lever > 0.0 ? 1.0 : -1.0) * f.clearance * tcp.col(1);
   touch_shift_ += ctx.in.observed_pose.linear().transpose() * toward;
   setStandoff(ctx, ctrl(), false, ctx.tracking_standoff, touch_shift_);
+  return true;
 }
 
 bool Grasp::onRun(HandoverContext& ctx) {
@@ -196,8 +197,8 @@ bool Grasp::onRun(HandoverContext& ctx) {
       return true;
     }
     setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kAlign, ctx.in.object.velocity.head<3>().norm());
-    if (touch_force_ > 0.0) feelTouch(ctx, fitNow(ctx));
-    const FingerFit f = fitNow(ctx);
+    FingerFit f = fitNow(ctx);
+    if (touch_force_ > 0.0 && feelTouch(ctx, f)) f = fitNow(ctx);  // the corrected grasp's fit
     // the funnel's standoff, reached at standoff_speed (the fit is as noisy as the object's pose)
     const double step = standoff_speed_ * std::max(0.0, ctx.time - funnel_time_);
     funnel_time_ = ctx.time;

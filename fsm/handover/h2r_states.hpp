@@ -97,8 +97,9 @@ class Grasp : public HandoverState {
   FingerFit fitNow(const HandoverContext& ctx) const;
   /// The grasp frame corrected by what the fingers felt (world).
   Isometry correctedGraspFrame(const HandoverContext& ctx) const;
-  /// A fingertip on the object: corrects the grasp toward it. RT safe.
-  void feelTouch(HandoverContext& ctx, const FingerFit& f);
+  /// A fingertip on the object: corrects the grasp toward it; true when it
+  /// did. `f`: the fit before. RT safe.
+  bool feelTouch(HandoverContext& ctx, const FingerFit& f);
 
   int grasped_, missed_, withdrawn_;
   double pos_tol_ = 0.01, rot_tol_ = 0.17, speed_tol_ = 0.05, confirm_time_ = 0.3, min_width_ = 0.005;
