@@ -32,15 +32,23 @@ double segmentDistance(const Vector3& p0, const Vector3& p1, const Vector3& q0, 
   return (w + s * u - t * v).norm();
 }
 
+namespace {
+
+// surface distance of capsule `c` posed by `poses` to obstacle `o` (m, negative: overlap)
+double capsuleDistance(const ChainPoses& poses, const Capsule& c, const ObstacleCapsule& o) {
+  const Isometry& X = poses.oMb[c.body];
+  return segmentDistance(X * c.a, X * c.b, o.a, o.b) - c.radius - o.radius;
+}
+
+}  // namespace
+
 double armClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles, int num_obstacles) {
   double best = std::numeric_limits<double>::infinity();
   for (const Capsule& c : model.capsules) {
-    const Isometry& X = poses.oMb[c.body];
-    const Vector3 a = X * c.a, b = X * c.b;
     for (int k = 0; k < num_obstacles; ++k) {
       const ObstacleCapsule& o = obstacles[k];
       if (o.gripper_works_here && c.role == CapsuleRole::kFingertip) continue;
-      best = std::min(best, segmentDistance(a, b, o.a, o.b) - c.radius - o.radius);
+      best = std::min(best, capsuleDistance(poses, c, o));
     }
   }
   return best;
@@ -52,11 +60,8 @@ double workZoneClearance(const Model& model, const ChainPoses& poses, const Obst
   for (int k = 0; k < num_obstacles; ++k) {
     const ObstacleCapsule& o = obstacles[k];
     if (!o.gripper_works_here) continue;
-    for (const Capsule& c : model.capsules) {
-      if (c.role == CapsuleRole::kFingertip) continue;
-      const Isometry& X = poses.oMb[c.body];
-      best = std::min(best, segmentDistance(X * c.a, X * c.b, o.a, o.b) - c.radius - o.radius);
-    }
+    for (const Capsule& c : model.capsules)
+      if (c.role != CapsuleRole::kFingertip) best = std::min(best, capsuleDistance(poses, c, o));
   }
   return best;
 }
