@@ -25,9 +25,11 @@ bool isFingertipCapsule(const control::CollisionBody& body);
 /// added back: the true clearance), skipping pairs of rule `skip_rule` (-1:
 /// none) and, when `skip_fingertips`, the fingertips (they hold the shared
 /// object). The arm part (everything but the hand: forearm, upper arm and the
-/// trunk) leaves out the gripper against the forearm and upper arm: near the
-/// person's wrist it is the handover itself, and its clearance is the
-/// collision constraint's job; against the trunk the gripper counts.
+/// trunk) leaves out the gripper, and the robot body that carries it (the
+/// wrist flange: one rigid body with the hand), against the forearm and upper
+/// arm: near the person's wrist it is the handover itself (the flange stands
+/// 10-15 cm from the forearm of a hand that holds the object out), and its
+/// clearance is the collision constraint's job; against the trunk they count.
 /// Infinity when no pair counts.
 double personDistance(const control::CollisionModel& cm, const control::CollisionData& cd, int skip_rule,
                       bool skip_fingertips, PersonPart part = PersonPart::kAll);

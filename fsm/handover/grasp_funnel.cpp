@@ -37,4 +37,10 @@ double funnelStandoff(const FingerFit& f, double max_standoff, double margin) {
   return max_standoff * (1.0 - enclosed);
 }
 
+double GraspFunnel::step(double standoff, double goal, double time) {
+  const double reach = speed * std::max(0.0, time - last_time);
+  last_time = time;
+  return standoff + std::clamp(goal - standoff, -reach, reach);
+}
+
 }  // namespace handover::fsm

@@ -46,4 +46,22 @@ FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry&
 /// clearance) to spare, linear between.
 double funnelStandoff(const FingerFit& f, double max_standoff, double margin);
 
+/// The funnel over time: the standoff moves toward funnelStandoff at no more
+/// than `speed` (the fit is as noisy as the object's pose). Configured by the
+/// states that slide the fingers in (Approach, Grasp). RT safe.
+struct GraspFunnel {
+  double max_standoff = 0.0;  ///< m, the funnel's mouth (0: no funnel)
+  double speed = 0.1;         ///< m/s, fastest change of the standoff
+  double margin = 0.5;        ///< share of the clearance the last slide keeps to spare
+  double last_time = 0.0;     ///< s, the last step
+
+  bool enabled() const { return max_standoff > 0.0; }
+  /// Restarts the rate limit at `time` (s).
+  void restart(double time) { last_time = time; }
+  /// The standoff (m) for this cycle from the one tracked now (`standoff`),
+  /// toward `goal` (m; funnelStandoff of the fit, or max_standoff where the
+  /// caller keeps the funnel closed).
+  double step(double standoff, double goal, double time);
+};
+
 }  // namespace handover::fsm

@@ -9,6 +9,21 @@
 
 namespace handover::fsm {
 
+namespace {
+/// The funnel's keys next to a standoff (m) already read.
+void readFunnel(const YamlReader& def, double standoff, GraspFunnel& funnel) {
+  funnel.max_standoff = standoff;
+  funnel.speed = HandoverState::readPositive(def, "standoff_speed", 1.0);
+  funnel.margin = HandoverState::readRange(def, "funnel_margin", 0.0, 1.0);
+}
+
+/// How the object sits between the open fingers for `grasp` (world).
+FingerFit fitFor(const HandoverContext& ctx, const Isometry& object, const Isometry& grasp) {
+  return fingerFit(ctx.in.tcp_pose, object, grasp, ctx.object.shape, ctx.params->gripper_open_width,
+                   ctx.params->finger_half_span);
+}
+}  // namespace
+
 WaitForPerson::WaitForPerson(bool hand)
     : hand_(hand), out_(declareOutput(hand ? "ReceiverComing" : "Offered")) {}
 
@@ -62,6 +77,11 @@ void Approach::configure(const YamlReader& def) {
   near_distance_ = readPositive(def, "near_distance", 1.0);
   if (def.has("near_orientation_deg")) near_orientation_ = readPositive(def, "near_orientation_deg", 180.0) * M_PI / 180.0;
   if (def.has("standoff")) standoff_ = readRange(def, "standoff", 0.0, 0.3);
+  if (def.has("funnel_margin")) {
+    if (hand_) def.child("funnel_margin").fail("only an approach to the object (a take) slides in through the funnel");
+    if (standoff_ <= 0.0) def.fail("a funnel (funnel_margin) needs a standoff > 0, its mouth");
+    readFunnel(def, standoff_, funnel_);
+  }
   if (def.has("lift")) {
     if (!hand_) def.child("lift").fail("only an approach to the hand (a give) has a lift");
     lift_ = readRange(def, "lift", 0.0, 0.3);
@@ -80,6 +100,28 @@ void Approach::onStart(HandoverContext& ctx) {
   trackTarget(ctx, ctrl(), hand_, standoff_, TrackingGains::kFollow,
               hand_ && lift_ > 0.0 ? descentShift(ctx, lift_) : Vector3::Zero().eval());
   if (!hand_) ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
+  funnel_.restart(ctx.time);
+}
+
+void Approach::slideIn(HandoverContext& ctx, bool arrived) {
+  // still brought in: lined up at the full standoff (a stiff slide onto an object
+  // that still moves would strike it); arrived: in as the object fits
+  double goal = funnel_.max_standoff;
+  if (arrived) {
+    // Grasp's fit, and on the approach line across the closing axis too: the slide goes
+    // along the line, not diagonally past the hand that holds the object
+    const Isometry grasp = trackedGraspFrame(ctx);
+    FingerFit f = fitFor(ctx, ctx.in.observed_pose, grasp);
+    f.fit -= std::abs((grasp.translation() - ctx.in.tcp_pose.translation()).dot(grasp.linear().col(0)));
+    goal = funnelStandoff(f, funnel_.max_standoff, funnel_.margin);
+  }
+  const double now = ctx.tracking_standoff;
+  const double standoff = funnel_.step(now, goal, ctx.time);
+  if (standoff == now) return;
+  setStandoff(ctx, ctrl(), false, standoff, ctx.tracking_shift);
+  // in the funnel the gripper and the hand share the object, as in Grasp: the rules that keep
+  // the fingers off the object and apart from the hand would stop the slide short of it
+  ctrl().relaxHandClearance(standoff < funnel_.max_standoff);
 }
 
 bool Approach::onRun(HandoverContext& ctx) {
@@ -95,8 +137,11 @@ bool Approach::onRun(HandoverContext& ctx) {
   blind_ = blind;
   const double dt = ctx.time - last_time_;
   last_time_ = ctx.time;
+  const bool arrived = ctx.params->arrive_speed <= 0.0 || body.velocity.head<3>().norm() <= ctx.params->arrive_speed;
   if (!blind) {
-    followPlan(ctx, ctrl(), hand_, standoff_);  // the best reachable target as the person moves
+    // the best reachable target as the person moves (a new grasp starts from the funnel's mouth)
+    const bool switched = followPlan(ctx, ctrl(), hand_, standoff_);
+    if (funnel_.enabled() && !switched) slideIn(ctx, arrived);
     if (hand_ && lift_ > 0.0) followDescent(ctx, ctrl(), lift_, lift_speed_, dt);
     // the gains follow the tracked target's speed: a take's target (where the reach ends) stands
     // still once it is known; a give's is the receiver's hand itself
@@ -108,9 +153,9 @@ bool Approach::onRun(HandoverContext& ctx) {
     return true;
   }
   // near, and the body arrived: the next phase's stiff gains meet a body at rest, not one still brought in.
-  // A take is near its pre-grasp (the standoff is the line-up); a give is near the presentation itself,
-  // not the descent's raised target (which stands above the TCP while it rises)
-  const bool arrived = ctx.params->arrive_speed <= 0.0 || body.velocity.head<3>().norm() <= ctx.params->arrive_speed;
+  // A take is near its pre-grasp (the standoff is the line-up, or the funnel's target as the fingers
+  // slide in); a give is near the presentation itself, not the descent's raised target (which stands
+  // above the TCP while it rises)
   const Isometry near_target = hand_ ? trackedGraspFrame(ctx) : ctx.in.target_pose;
   if (!blind && arrived && positionError(ctx.in.tcp_pose, near_target) <= near_distance_ &&
       rotationError(ctx.in.tcp_pose, near_target) <= near_orientation_) {
@@ -130,11 +175,7 @@ void Grasp::configure(const YamlReader& def) {
   confirm_time_ = readRange(def, "confirm_time", 0.0, 5.0);
   stall_speed_ = readPositive(def, "stall_speed", 1.0);
   min_width_ = readRange(def, "min_width", 0.0, 0.08);
-  if (def.has("standoff")) {
-    max_standoff_ = readRange(def, "standoff", 0.0, 0.3);
-    standoff_speed_ = readPositive(def, "standoff_speed", 1.0);
-    funnel_margin_ = readRange(def, "funnel_margin", 0.0, 1.0);
-  }
+  if (def.has("standoff")) readFunnel(def, readRange(def, "standoff", 0.0, 0.3), funnel_);
   if (def.has("touch_force")) {
     touch_force_ = readRange(def, "touch_force", 0.0, 100.0);
     touch_time_ = readRange(def, "touch_time", 0.0, 1.0);
@@ -145,12 +186,12 @@ void Grasp::configure(const YamlReader& def) {
 void Grasp::onStart(HandoverContext& ctx) {
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   closing_ = false;
-  funnel_time_ = ctx.time;
+  funnel_.restart(ctx.time);
   touches_ = 0;
   touch_since_ = -1.0;
   touch_felt_ = false;
   touch_shift_.setZero();
-  trackTarget(ctx, ctrl(), false, std::min(ctx.tracking_standoff, funnelStandoff(fitNow(ctx), max_standoff_, funnel_margin_)),
+  trackTarget(ctx, ctrl(), false, std::min(ctx.tracking_standoff, funnelStandoff(fitNow(ctx), funnel_.max_standoff, funnel_.margin)),
               TrackingGains::kAlign);
 }
 
@@ -163,8 +204,7 @@ Isometry Grasp::correctedGraspFrame(const HandoverContext& ctx) const {
 FingerFit Grasp::fitNow(const HandoverContext& ctx) const {
   Isometry object = ctx.in.observed_pose;
   object.translation() += object.linear() * touch_shift_;
-  return fingerFit(ctx.in.tcp_pose, object, correctedGraspFrame(ctx), ctx.object.shape,
-                   ctx.params->gripper_open_width, ctx.params->finger_half_span);
+  return fitFor(ctx, object, correctedGraspFrame(ctx));
 }
 
 bool Grasp::feelTouch(HandoverContext& ctx, const FingerFit& f) {
@@ -200,10 +240,8 @@ bool Grasp::onRun(HandoverContext& ctx) {
     FingerFit f = fitNow(ctx);
     if (touch_force_ > 0.0 && feelTouch(ctx, f)) f = fitNow(ctx);  // the corrected grasp's fit
     // the funnel's standoff, reached at standoff_speed (the fit is as noisy as the object's pose)
-    const double step = standoff_speed_ * std::max(0.0, ctx.time - funnel_time_);
-    funnel_time_ = ctx.time;
     const double now = ctx.tracking_standoff;
-    const double standoff = now + std::clamp(funnelStandoff(f, max_standoff_, funnel_margin_) - now, -step, step);
+    const double standoff = funnel_.step(now, funnelStandoff(f, funnel_.max_standoff, funnel_.margin), ctx.time);
     if (standoff != now) setStandoff(ctx, ctrl(), false, standoff, touch_shift_);
     // closes only on an object between the fingers (the funnel's last part)
     if (f.fit <= 0.0 || positionError(ctx.in.tcp_pose, correctedGraspFrame(ctx)) > pos_tol_ ||

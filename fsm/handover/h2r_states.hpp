@@ -41,9 +41,22 @@ class WaitForPerson : public HandoverState {
 /// also needs the body to have arrived (slower than params.arrive_speed,
 /// when set): the stiff phase after it is for a body at rest. Tracking
 /// gains follow the body's speed (setPhaseGainsForSpeed).
-/// Keys: near_distance (m, TCP to target frame); a give's lift (m, optional,
-/// default 0: none) with lift_speed (m/s): the presentation is approached
-/// from above the receiver's hand (presentation_descent.hpp).
+/// A take with funnel_margin approaches continuously: the standoff is the
+/// grasp funnel's (grasp_funnel.hpp) once the object has arrived (slower
+/// than params.arrive_speed; the full standoff while it is still brought
+/// in, and after every switch of the planned grasp), with the TCP's offset
+/// from the approach line along the fingers' width counted against the fit
+/// too (the slide goes along the line), so the fingers slide in as the
+/// alignment converges instead of stopping at the pre-grasp pose first. In
+/// the funnel the hand clearance is relaxed as in Grasp (the fingers go
+/// around the object the person holds). Near is then near the funnel's
+/// current target.
+/// Keys: near_distance (m, TCP to target frame); standoff (m, the pre-grasp
+/// distance along the approach axis) with, for a take's funnel,
+/// standoff_speed (m/s) and funnel_margin (share of the clearance, 0..1);
+/// a give's lift (m, optional, default 0: none) with lift_speed (m/s): the
+/// presentation is approached from above the receiver's hand
+/// (presentation_descent.hpp).
 class Approach : public HandoverState {
  public:
   explicit Approach(bool hand);
@@ -52,6 +65,10 @@ class Approach : public HandoverState {
   bool onRun(HandoverContext& ctx) override;
 
  private:
+  /// A take's funnel: the standoff toward the funnel's, once the object has
+  /// `arrived`. RT safe.
+  void slideIn(HandoverContext& ctx, bool arrived);
+
   bool hand_;
   int near_, withdrawn_;
   double near_distance_ = 0.1;
@@ -61,6 +78,7 @@ class Approach : public HandoverState {
   double lift_speed_ = 0.4;         ///< m/s, fastest change of the lift
   double last_time_ = 0.0;          ///< s, the last cycle (the lift's rate)
   bool blind_ = false;              ///< holding: the tracked body's data is stale
+  GraspFunnel funnel_;              ///< a take's continuous approach; max_standoff 0: none
 };
 
 /// [Grasped, Missed, Withdrawn] Keeps tracking the grasp frame; closes when
@@ -104,10 +122,7 @@ class Grasp : public HandoverState {
   int grasped_, missed_, withdrawn_;
   double pos_tol_ = 0.01, rot_tol_ = 0.17, speed_tol_ = 0.05, confirm_time_ = 0.3, min_width_ = 0.005;
   double stall_speed_ = 0.01;
-  double max_standoff_ = 0.0;    ///< m, the funnel's mouth
-  double standoff_speed_ = 0.1;  ///< m/s, fastest change of the standoff
-  double funnel_margin_ = 0.5;   ///< share of the clearance the last slide keeps to spare
-  double funnel_time_ = 0.0;     ///< s, when the standoff last changed
+  GraspFunnel funnel_;           ///< max_standoff 0: no funnel
   bool closing_ = false;
   double closed_at_ = 0.0;
   double last_width_ = 0.0, last_time_ = 0.0, finger_speed_ = 0.0;

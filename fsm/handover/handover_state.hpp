@@ -18,16 +18,16 @@ class HandoverState : public State {
   /// The state's handle (tests inspect what it touched).
   const ControllerHandle& handle() const { return ctrl_; }
 
+  /// Required number in (0, hi]; error names the key.
+  static double readPositive(const YamlReader& def, const char* key, double hi);
+  /// Required number in [lo, hi].
+  static double readRange(const YamlReader& def, const char* key, double lo, double hi);
+
  protected:
   virtual void onStart(HandoverContext& ctx) { (void)ctx; }
   virtual bool onRun(HandoverContext& ctx) = 0;
   virtual void onTeardown(HandoverContext& ctx) { (void)ctx; }
   ControllerHandle& ctrl() { return ctrl_; }
-
-  /// Required number in (0, hi]; error names the key.
-  static double readPositive(const YamlReader& def, const char* key, double hi);
-  /// Required number in [lo, hi].
-  static double readRange(const YamlReader& def, const char* key, double lo, double hi);
 
  private:
   ControllerHandle ctrl_;

@@ -87,5 +87,35 @@ TEST(CollisionQueries, GripperCountsAgainstTheTrunkButNotTheForearm) {
   EXPECT_DOUBLE_EQ(personDistance(cm, cd, -1, false, PersonPart::kAll), 0.01);
 }
 
+// The flange the gripper is mounted on is one rigid body with the hand: it
+// stands 10-15 cm from the forearm of a hand that holds the object out, and
+// counting it slowed every grasp's last centimetres to the overlay's speed.
+// The links before it still count against the forearm.
+TEST(CollisionQueries, TheFlangeThatCarriesTheGripperIsTheHandoverButTheElbowIsNot) {
+  const control::RobotDescription d = control::defaultRobotDescription();
+  const control::Model model = control::loadModel(d, 0.08);
+  const control::CollisionConfig cfg = control::parseCollisionConfig(
+      "pairs:\n"
+      "  - {name: flange, robot: panda_link7*, other: human_forearm, margin: 0.0}\n"
+      "  - {name: elbow, robot: panda_link4, other: human_forearm, margin: 0.0}\n",
+      "queries.yaml");
+  const control::CollisionModel cm = control::buildCollisionModel(model, cfg);
+  control::CollisionData cd(cm);
+  int flange_pairs = 0;
+  for (int k = 0; k < cm.numPairs(); ++k) {
+    cd.results[k].active = true;
+    const bool flange = cm.rule_names[cm.pairs[k].rule] == "flange";
+    flange_pairs += flange;
+    cd.results[k].distance = flange ? 0.10 : 0.30;
+  }
+  ASSERT_GT(flange_pairs, 0);
+  EXPECT_DOUBLE_EQ(personDistance(cm, cd, -1, false, PersonPart::kArm), 0.30);
+  EXPECT_DOUBLE_EQ(personDistance(cm, cd, -1, false, PersonPart::kAll), 0.10);
+  // the elbow near the forearm is an intruder like any other
+  for (int k = 0; k < cm.numPairs(); ++k)
+    if (cm.rule_names[cm.pairs[k].rule] == "elbow") cd.results[k].distance = 0.05;
+  EXPECT_DOUBLE_EQ(personDistance(cm, cd, -1, false, PersonPart::kArm), 0.05);
+}
+
 }  // namespace
 }  // namespace handover::runtime

@@ -196,6 +196,52 @@ TEST(HandoverH2R, ApproachStiffensAsTheObjectArrives) {
   }
 }
 
+// A continuous approach: once the object has arrived and lies between the open
+// fingers' planes, the pre-grasp standoff shrinks during Approach already
+// (the fingers slide in as the alignment converges, no stop at the pre-grasp
+// pose first), with the hand clearance relaxed as in Grasp; not while the
+// object is still brought in, nor while the TCP is off the approach line.
+TEST(HandoverH2R, ApproachSlidesInOnceTheObjectHasArrivedAndFits) {
+  io::ObjectShape box;
+  box.kind = io::ObjectShape::Kind::kBox;
+  box.size = Vector3(0.05, 0.05, 0.10);  // 15 mm to spare on each side of the open fingers
+  Rig rig(false, false, box);
+  const HandoverParams& p = rig.fsm->params();
+  // the tracked frame backed off along its approach axis: offset = grasp * (0, 0, -standoff)
+  const Vector3 grasp_in_object = rig.ctl.offset.translation();
+  const auto standoff = [&] { return (rig.ctl.offset.translation() - grasp_in_object).norm(); };
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  rig.runFor(0.05);
+  ASSERT_GT(rig.world.hand_vel.norm(), p.arrive_speed);
+  EXPECT_NEAR(standoff(), 0.08, 1e-9);  // still brought in: lined up at the mouth
+  EXPECT_FALSE(rig.ctl.hand_relaxed);
+  // arrived, but the TCP held far off the approach line: the funnel stays shut
+  rig.world.arm_stuck = true;
+  ASSERT_TRUE(rig.runUntil([&] { return rig.world.hand_vel.norm() == 0.0; }, 5.0));
+  rig.runFor(0.5);
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Approach"));
+  EXPECT_NEAR(standoff(), 0.08, 1e-9);
+  EXPECT_FALSE(rig.ctl.hand_relaxed);
+  // free to move, on the approach line 15 cm behind the pre-grasp pose: the fingers
+  // slide in on the way, before Approach is over
+  rig.world.arm_stuck = false;
+  rig.world.tcp = rig.world.desired(rig.ctl) * Eigen::Translation3d(0.0, 0.0, -0.15);
+  double least = 1.0;
+  bool relaxed = false;
+  ASSERT_TRUE(rig.runUntil(
+      [&] {
+        if (!Rig::endsWith(rig.fsm->activePath(), "Approach")) return true;
+        least = std::min(least, standoff());
+        relaxed = relaxed || rig.ctl.hand_relaxed;
+        return false;
+      },
+      5.0));
+  EXPECT_LT(least, 0.06);
+  EXPECT_TRUE(relaxed);
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Grasp")) << rig.fsm->activePath();
+}
+
 TEST(HandoverH2R, ApproachStartsOnceTheReachsEndIsKnownNotOnceTheObjectArrives) {
   // a receiver starts to move with the giver: once perception knows where the reach ends (in
   // the workspace), the approach starts while the object is still outside it
