@@ -66,20 +66,27 @@ TEST(CollisionQueries, AnotherGripperIsADescriptionChange) {
 // The "arm" distance (everything but the hand) leaves the gripper out against
 // the person's forearm (the handover itself happens there) but not against
 // the trunk: a gripper at the chest is no handover.
-TEST(CollisionQueries, GripperCountsAgainstTheTrunkButNotTheForearm) {
-  const control::RobotDescription d = control::defaultRobotDescription();
-  const control::Model model = control::loadModel(d, 0.08);
-  const control::CollisionConfig cfg = control::parseCollisionConfig(
-      "pairs:\n"
-      "  - {name: fore, robot: panda_hand, other: human_forearm, margin: 0.0}\n"
-      "  - {name: trunk, robot: panda_hand, other: human_torso, margin: 0.0}\n",
-      "queries.yaml");
-  const control::CollisionModel cm = control::buildCollisionModel(model, cfg);
-  control::CollisionData cd(cm);
+/// The shipped robot's collision model with only these pair rules (YAML list items).
+control::CollisionModel modelWithPairs(const std::string& pairs) {
+  const control::Model model = control::loadModel(control::defaultRobotDescription(), 0.08);
+  return control::buildCollisionModel(model, control::parseCollisionConfig("pairs:\n" + pairs, "queries.yaml"));
+}
+
+/// Every pair active, at the distance `of(rule name, pair index)`.
+template <class F>
+void setDistances(const control::CollisionModel& cm, control::CollisionData& cd, F of) {
   for (int k = 0; k < cm.numPairs(); ++k) {
     cd.results[k].active = true;
-    cd.results[k].distance = cm.rule_names[cm.pairs[k].rule] == "fore" ? 0.01 : 0.05 + 0.001 * k;
+    cd.results[k].distance = of(cm.rule_names[cm.pairs[k].rule], k);
   }
+}
+
+TEST(CollisionQueries, GripperCountsAgainstTheTrunkButNotTheForearm) {
+  const control::CollisionModel cm = modelWithPairs(
+      "  - {name: fore, robot: panda_hand, other: human_forearm, margin: 0.0}\n"
+      "  - {name: trunk, robot: panda_hand, other: human_torso, margin: 0.0}\n");
+  control::CollisionData cd(cm);
+  setDistances(cm, cd, [](const std::string& rule, int k) { return rule == "fore" ? 0.01 : 0.05 + 0.001 * k; });
   double trunk = 1e9;
   for (int k = 0; k < cm.numPairs(); ++k)
     if (cm.rule_names[cm.pairs[k].rule] == "trunk") trunk = std::min(trunk, cd.results[k].distance);
@@ -92,28 +99,20 @@ TEST(CollisionQueries, GripperCountsAgainstTheTrunkButNotTheForearm) {
 // counting it slowed every grasp's last centimetres to the overlay's speed.
 // The links before it still count against the forearm.
 TEST(CollisionQueries, TheFlangeThatCarriesTheGripperIsTheHandoverButTheElbowIsNot) {
-  const control::RobotDescription d = control::defaultRobotDescription();
-  const control::Model model = control::loadModel(d, 0.08);
-  const control::CollisionConfig cfg = control::parseCollisionConfig(
-      "pairs:\n"
+  const control::CollisionModel cm = modelWithPairs(
       "  - {name: flange, robot: panda_link7*, other: human_forearm, margin: 0.0}\n"
-      "  - {name: elbow, robot: panda_link4, other: human_forearm, margin: 0.0}\n",
-      "queries.yaml");
-  const control::CollisionModel cm = control::buildCollisionModel(model, cfg);
+      "  - {name: elbow, robot: panda_link4, other: human_forearm, margin: 0.0}\n");
   control::CollisionData cd(cm);
   int flange_pairs = 0;
-  for (int k = 0; k < cm.numPairs(); ++k) {
-    cd.results[k].active = true;
-    const bool flange = cm.rule_names[cm.pairs[k].rule] == "flange";
-    flange_pairs += flange;
-    cd.results[k].distance = flange ? 0.10 : 0.30;
-  }
+  setDistances(cm, cd, [&](const std::string& rule, int) {
+    flange_pairs += rule == "flange";
+    return rule == "flange" ? 0.10 : 0.30;
+  });
   ASSERT_GT(flange_pairs, 0);
   EXPECT_DOUBLE_EQ(personDistance(cm, cd, -1, false, PersonPart::kArm), 0.30);
   EXPECT_DOUBLE_EQ(personDistance(cm, cd, -1, false, PersonPart::kAll), 0.10);
   // the elbow near the forearm is an intruder like any other
-  for (int k = 0; k < cm.numPairs(); ++k)
-    if (cm.rule_names[cm.pairs[k].rule] == "elbow") cd.results[k].distance = 0.05;
+  setDistances(cm, cd, [](const std::string& rule, int) { return rule == "elbow" ? 0.05 : 0.10; });
   EXPECT_DOUBLE_EQ(personDistance(cm, cd, -1, false, PersonPart::kArm), 0.05);
 }
 
