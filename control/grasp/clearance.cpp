@@ -66,17 +66,6 @@ double workZoneClearance(const Model& model, const ChainPoses& poses, const Obst
   return best;
 }
 
-double personArmClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
-                          int num_obstacles) {
-  double best = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < num_obstacles; ++k) {
-    const ObstacleCapsule& o = obstacles[k];
-    if (o.gripper_works_here) continue;
-    for (const Capsule& c : model.capsules) best = std::min(best, capsuleDistance(poses, c, o));
-  }
-  return best;
-}
-
 double lowestArmPoint(const Model& model, const ChainPoses& poses, int first_body) {
   double lowest = std::numeric_limits<double>::infinity();
   for (const Capsule& c : model.capsules) {

@@ -39,12 +39,6 @@ double armClearance(const Model& model, const ChainPoses& poses, const ObstacleC
 double workZoneClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
                          int num_obstacles);
 
-/// Smallest surface distance between any of the model's capsules, the
-/// fingertips included, and the obstacles where the fingers do not work (the
-/// person's forearm and upper arm), m; +infinity without such obstacles.
-double personArmClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
-                          int num_obstacles);
-
 /// Lowest point (world z, m) of the capsules of bodies `first_body`.. (the
 /// base and link 1 stand on the table and are left out with first_body = 2).
 double lowestArmPoint(const Model& model, const ChainPoses& poses, int first_body = 2);

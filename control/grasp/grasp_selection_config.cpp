@@ -93,7 +93,6 @@ GraspSelectionConfig graspSelectionConfigFrom(const YamlReader& root) {
     c.table_clearance = nonNegative(*r, "clearance", c.table_clearance, 1.0);
     r->finish();
   }
-  c.person_clearance = nonNegative(root, "person_clearance", c.person_clearance, 0.5);
   c.hysteresis = nonNegative(root, "hysteresis", c.hysteresis, 1e3);
   c.declared_preference = nonNegative(root, "declared_preference", c.declared_preference, 1e3);
   if (auto r = root.optionalChild("cold_solves_per_update")) {

@@ -30,12 +30,6 @@ struct GraspSelectionConfig {
   /// onward) dip below table_height + table_clearance is not reachable.
   double table_height = 0.0;
   double table_clearance = 0.02;
-  /// m: a configuration whose capsules, the fingers' included, come nearer
-  /// than this to the person's arm (the obstacles where the fingers do not
-  /// work) is not reachable: the collision constraints keep at least their
-  /// sDist from the person (config/collision.yaml), and a grasp inside that
-  /// was tracked until the person gave up.
-  double person_clearance = 0.005;
   double hysteresis = 0.15;           ///< score units another candidate must gain to replace the current choice
   /// Score units added to the grasps the object declares over the families
   /// its shape allows (GraspSpec::preference; applied by whoever builds the specs).
