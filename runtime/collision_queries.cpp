@@ -15,14 +15,6 @@ bool isFingertipCapsule(const control::CollisionBody& b) {
 
 double personDistance(const control::CollisionModel& cm, const control::CollisionData& cd, int skip_rule,
                       bool skip_fingertips, PersonPart part) {
-  // the robot body the gripper is mounted on (-1: no gripper capsule)
-  int gripper_body = -1;
-  for (const control::CollisionBody& b : cm.bodies) {
-    if (isGripperCapsule(b)) {
-      gripper_body = b.body;
-      break;
-    }
-  }
   double d = INFINITY;
   for (int i = 0; i < cm.numPairs(); ++i) {
     const auto& pair = cm.pairs[i];
@@ -36,7 +28,7 @@ double personDistance(const control::CollisionModel& cm, const control::Collisio
     if (skip_fingertips && isFingertipCapsule(robot)) continue;
     // the gripper (and the flange it is on) near the person's forearm is the handover itself;
     // near the trunk it is not
-    if (part == PersonPart::kArm && robot.body == gripper_body && other.kind != control::CollisionBodyKind::kHumanTrunk)
+    if (part == PersonPart::kArm && robot.body == cm.gripper_body && other.kind != control::CollisionBodyKind::kHumanTrunk)
       continue;
     d = std::min(d, res.distance + pair.margin);
   }

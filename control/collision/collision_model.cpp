@@ -80,6 +80,7 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
     b.radius = c.radius;
     b.local = segmentFrame(c.a, c.b);
     cm.bodies.push_back(b);
+    if (c.role != CapsuleRole::kArm && cm.gripper_body < 0) cm.gripper_body = c.body;
   }
   const int num_robot = static_cast<int>(cm.bodies.size());
 

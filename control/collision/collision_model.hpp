@@ -64,6 +64,9 @@ struct CollisionModel {
   int table = -1, human_hand = -1, human_forearm = -1, human_upper_arm = -1, object = -1;  ///< body indices
   int human_torso = -1, human_legs = -1, human_head = -1;                                  ///< body indices (trunk)
   int human_free_arm = -1;  ///< body index: the other arm, hanging beside the torso (a trunk body)
+  /// Model body (0..7) the gripper's capsules are on (the flange's: the hand
+  /// is fixed to it); -1 without gripper capsules.
+  int gripper_body = -1;
 
   /// Index of a rule, or -1.
   int ruleIndex(const std::string& name) const;

@@ -271,10 +271,7 @@ struct World {
     in.person_constraint_engaged = in.human_distance < kPersonIDist;
     in.observed_target = c.observation;
     in.observed_pose = c.observation == ObservationTarget::kHand ? handPose() : objectPose();
-    // the controller's grasp frame: where the offset puts it on the observed body, tracked or not
-    in.target_pose = c.observation != ObservationTarget::kNone
-                         ? Isometry((c.observation == ObservationTarget::kObject ? objectPose() : handPose()) * c.offset)
-                         : desired(c);
+    in.target_pose = desired(c);
     in.target_velocity.head<3>() =
         c.observation == ObservationTarget::kHand ? hand_vel : in.object.velocity.head<3>().eval();
     in.holds_object = robot_carries;
