@@ -1,5 +1,8 @@
 #include "runtime/grasp_planning.hpp"
 
+#include <algorithm>
+#include <stdexcept>
+
 #include "control/grasp/upright_placement.hpp"
 
 namespace handover::runtime {
@@ -35,12 +38,64 @@ std::vector<cg::GraspSpec> presentationSpecs(const control::Isometry& presentati
 }
 }  // namespace
 
+PersonKeeps personKeeps(const control::CollisionModel& model) {
+  PersonKeeps k;
+  for (const control::CollisionPair& p : model.pairs) {
+    const control::RuleScope scope = model.rule_scope[static_cast<std::size_t>(p.rule)];
+    if (scope == control::RuleScope::kSharing || scope == control::RuleScope::kTaking) continue;
+    PersonKeeps::Keep* keep = nullptr;
+    switch (model.bodies[static_cast<std::size_t>(p.other_body)].kind) {
+      case control::CollisionBodyKind::kHumanHand: keep = &k.hand; break;
+      case control::CollisionBodyKind::kHumanForearm: keep = &k.forearm; break;
+      case control::CollisionBodyKind::kHumanUpperArm: keep = &k.upper_arm; break;
+      case control::CollisionBodyKind::kHumanTrunk: keep = &k.trunk; break;
+      default: continue;
+    }
+    const double d = p.margin + p.damper.s_dist;
+    const bool arm = model.bodies[static_cast<std::size_t>(p.robot_body)].role == control::CapsuleRole::kArm;
+    double& slot = arm ? keep->arm : keep->gripper;
+    slot = std::max(slot, d);
+  }
+  return k;
+}
+
+std::vector<cg::ObstacleCapsule> trunkObstacles(const control::PersonTrunk& trunk, double free_arm_radius) {
+  std::vector<cg::ObstacleCapsule> out;
+  const control::Vector3& size = trunk.torso_size;  // depth (x), width (y), height (z)
+  const double r = 0.5 * std::min(size.x(), size.y());
+  const double half_z = std::max(0.0, 0.5 * size.z() - r);
+  // the narrower side's half-width swept along the wider one: two capsules at its ends
+  const control::Vector3 along = size.x() < size.y() ? control::Vector3::UnitY() : control::Vector3::UnitX();
+  const double offset = 0.5 * std::max(size.x(), size.y()) - r;
+  for (double side : {-1.0, 1.0}) {
+    cg::ObstacleCapsule c;
+    const control::Vector3 centre = control::Vector3(0.0, 0.0, trunk.torso_centre) + side * offset * along;
+    c.a = centre - half_z * control::Vector3::UnitZ();
+    c.b = centre + half_z * control::Vector3::UnitZ();
+    c.radius = r;
+    out.push_back(c);
+  }
+  cg::ObstacleCapsule head;
+  head.a = head.b = control::Vector3(0.0, 0.0, trunk.head_centre);
+  head.radius = trunk.head_radius;
+  out.push_back(head);
+  cg::ObstacleCapsule arm;
+  arm.a = trunk.free_arm_top;
+  arm.b = trunk.free_arm_bottom;
+  arm.radius = free_arm_radius;
+  out.push_back(arm);
+  return out;
+}
+
 GraspPlanning::GraspPlanning(const control::Model& model, const GraspPlanningSettings& settings)
     : model_(model),
       settings_(settings),
       object_(model, settings.object_grasps, settings.config),
       hand_(model, presentationSpecs(settings.presentation, settings.presentation_pivot, settings.config),
-            presentationSelectionConfig(settings.config)) {}
+            presentationSelectionConfig(settings.config)) {
+  if (static_cast<int>(settings.trunk.size()) > kMaxTrunkObstacles)
+    throw std::invalid_argument("GraspPlanning: more trunk capsules than kMaxTrunkObstacles");
+}
 
 void GraspPlanning::reset() {
   object_.reset();
@@ -59,7 +114,8 @@ void GraspPlanning::copyChoice(const cg::GraspChoice& c, fsm::TrackingPlan& plan
   plan.q_pre = c.q_pre_grasp;
 }
 
-int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool with_hand) {
+int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool giving,
+                                   const control::Isometry* torso) {
   if (!human.valid || human.stale) return 0;
   auto capsule = [](const control::Isometry& X, double length, double radius) {
     cg::ObstacleCapsule c;
@@ -68,29 +124,48 @@ int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool 
     c.radius = radius;
     return c;
   };
+  auto keep = [](cg::ObstacleCapsule& c, const PersonKeeps::Keep& k) {
+    c.keep_arm = k.arm;
+    c.keep_gripper = k.gripper;
+  };
   obstacles_[0] = capsule(human.forearm, settings_.forearm_length, settings_.forearm_radius);
+  keep(obstacles_[0], settings_.keeps.forearm);
   obstacles_[1] = capsule(human.upper_arm, settings_.upper_arm_length, settings_.upper_arm_radius);
-  if (!with_hand) return 2;
+  keep(obstacles_[1], settings_.keeps.upper_arm);
+  // the hand that holds the object: the fingers work in it, the palm and the arm keep clear; the
+  // hand that receives it: the gripper brings the object into it, the arm keeps clear
   obstacles_[2] = capsule(human.hand, 0.0, settings_.hand_radius);
-  obstacles_[2].gripper_works_here = true;  // the fingers work in it; the palm and the arm keep clear
-  return 3;
+  obstacles_[2].gripper_works_here = true;
+  obstacles_[2].palm_works_here = giving;
+  keep(obstacles_[2], settings_.keeps.hand);
+  int n = 3;
+  if (torso == nullptr) return n;
+  for (const cg::ObstacleCapsule& c : settings_.trunk) {
+    cg::ObstacleCapsule& o = obstacles_[n++];
+    o = c;
+    o.a = *torso * c.a;
+    o.b = *torso * c.b;
+    keep(o, settings_.keeps.trunk);
+  }
+  return n;
 }
 
-void GraspPlanning::update(const perception::PerceptionEstimate& est, const control::Vector7& q, bool robot_holds) {
+void GraspPlanning::update(const perception::PerceptionEstimate& est, const control::Vector7& q, bool robot_holds,
+                           const control::Isometry* torso) {
   const bool fresh_sample = est.human.valid && !est.human.stale;
   if (!robot_holds) {
     if (fresh_sample && est.object.valid && est.human.stamp != object_stamp_) {
       object_stamp_ = est.human.stamp;
-      const int n = personObstacles(est.human, true);
-      copyChoice(object_.update(est.object.pose, q, obstacles_, n), object_plan_);
+      const int n = personObstacles(est.human, false, torso);
+      copyChoice(object_.update(est.object.pose, q, obstacles_.data(), n), object_plan_);
     }
     hand_plan_.valid = false;
     return;
   }
   if (fresh_sample && est.human.stamp != hand_stamp_) {
     hand_stamp_ = est.human.stamp;
-    const int n = personObstacles(est.human, false);  // the object goes into that hand
-    copyChoice(hand_.update(est.human.hand, q, obstacles_, n), hand_plan_);
+    const int n = personObstacles(est.human, true, torso);  // the object goes into that hand
+    copyChoice(hand_.update(est.human.hand, q, obstacles_.data(), n), hand_plan_);
   }
   object_plan_.valid = false;
 }

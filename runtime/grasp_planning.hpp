@@ -7,7 +7,10 @@
 // Take: while the person holds the object, each new object sample re-selects
 // among the grasps the object admits (declared grasps, every turn about a
 // free axis, the gripper's half-turn twins) the one the arm reaches best,
-// avoiding the person's forearm and upper arm.
+// avoiding the person's forearm, upper arm and trunk (no configuration nearer
+// them than the collision constraints keep the arm: PersonKeeps), the hand
+// where the fingers work kept clear of the palm and the arm's links (the
+// receiver's hand, for a give, of the arm's links only).
 // Give: while the robot holds the object, each new hand sample re-selects the
 // presentation: the declared TCP-in-hand frame turned about the hand's z axis
 // (the receiver takes the object at any turn about the vertical), upright or
@@ -21,14 +24,33 @@
 // phase starts, outside the 1 ms control step (HandoverCycle::plan).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <vector>
 
+#include "control/collision/collision_config.hpp"
+#include "control/collision/collision_model.hpp"
 #include "control/grasp/grasp_selector.hpp"
 #include "fsm/handover/grasp_plan.hpp"
 #include "perception/perception_estimator.hpp"
 
 namespace handover::runtime {
+
+/// How far the collision constraints keep the arm's capsules and the
+/// gripper's (palm and fingers) from each part of the person while the gripper
+/// does not share the object with their hand (m: margin, sensing budget and
+/// sDist of the pairs; personKeeps). The selector does not plan a
+/// configuration nearer than that (control::grasp::personBodyClearance).
+struct PersonKeeps {
+  struct Keep {
+    double arm = 0.0, gripper = 0.0;
+  };
+  Keep hand, forearm, upper_arm, trunk;
+};
+
+/// The largest clearance the `always` and `apart` pair rules keep between
+/// each class of robot capsule and each part of the person.
+PersonKeeps personKeeps(const control::CollisionModel& model);
 
 struct GraspPlanningSettings {
   control::grasp::GraspSelectionConfig config;        ///< config/grasp_selection.yaml
@@ -38,7 +60,23 @@ struct GraspPlanningSettings {
   double forearm_length = 0.27, upper_arm_length = 0.33;  ///< m, the person's arm capsules
   double forearm_radius = 0.045, upper_arm_radius = 0.055;  ///< m
   double hand_radius = 0.05;  ///< m, a sphere around the grip point (take: grasp away from the hand)
+  /// The person's trunk (torso, head, the arm that does not hand) as capsules
+  /// in the torso frame (trunkObstacles); empty when the stand is not declared.
+  /// At most kMaxTrunkObstacles.
+  std::vector<control::grasp::ObstacleCapsule> trunk;
+  PersonKeeps keeps;  ///< what the collision constraints keep from the person (zero: only no overlap)
 };
+
+/// At most this many trunk capsules (GraspPlanningSettings::trunk).
+constexpr int kMaxTrunkObstacles = 4;
+
+/// The trunk of the collision model (a torso box, a head sphere, the free
+/// arm's capsule; legs under the table are left out) as selector capsules in
+/// the torso frame (floor under the body centre, x forward): the torso box as
+/// two vertical capsules side by side whose stadium section fits the box's
+/// and whose caps reach its top and bottom.
+std::vector<control::grasp::ObstacleCapsule> trunkObstacles(const control::PersonTrunk& trunk,
+                                                            double free_arm_radius);
 
 class GraspPlanning : public fsm::PlannerInterface {
  public:
@@ -46,8 +84,10 @@ class GraspPlanning : public fsm::PlannerInterface {
   GraspPlanning(const control::Model& model, const GraspPlanningSettings& settings);
 
   /// Re-selects on a new sample (take: the object while the person holds
-  /// it; give: the hand while the robot holds the object); q: the arm now.
-  void update(const perception::PerceptionEstimate& estimate, const control::Vector7& q, bool robot_holds);
+  /// it; give: the hand while the robot holds the object); q: the arm now;
+  /// torso: where the person's trunk stands (world), null when unknown.
+  void update(const perception::PerceptionEstimate& estimate, const control::Vector7& q, bool robot_holds,
+              const control::Isometry* torso = nullptr);
   /// Forgets both choices (a new object, a new run).
   void reset();
   /// Keeps the object's choice (take) while it stays reachable
@@ -63,8 +103,9 @@ class GraspPlanning : public fsm::PlannerInterface {
 
  private:
   static void copyChoice(const control::grasp::GraspChoice& c, fsm::TrackingPlan& plan);
-  /// Fills obstacles_ with the person's arm (and hand); returns their number.
-  int personObstacles(const perception::HumanEstimate& human, bool with_hand);
+  /// Fills obstacles_ with the person's arm, hand (taking or receiving the
+  /// object: `giving`) and trunk; returns their number.
+  int personObstacles(const perception::HumanEstimate& human, bool giving, const control::Isometry* torso);
 
   const control::Model& model_;
   GraspPlanningSettings settings_;
@@ -72,7 +113,7 @@ class GraspPlanning : public fsm::PlannerInterface {
   control::grasp::GraspSelector hand_;
   fsm::TrackingPlan object_plan_, hand_plan_;
   double object_stamp_ = -1.0, hand_stamp_ = -1.0;
-  control::grasp::ObstacleCapsule obstacles_[3];
+  std::array<control::grasp::ObstacleCapsule, 3 + kMaxTrunkObstacles> obstacles_;
 };
 
 /// The presentation selector's options: no twins (a held object turns with the

@@ -15,6 +15,18 @@ namespace {
 
 constexpr double kFloorZ = -0.75;  // m, the floor under the person (design notes 1)
 double clip(double v) { return std::isfinite(v) ? std::min(v, 2.0) : 2.0; }
+
+// the trunk is not tracked: it stands under the tracked shoulder, facing the
+// declared way, on the floor (the torso frame of io::HumanBodyPoses)
+control::Isometry torsoUnderShoulder(const control::Vector3& shoulder, const CycleSettings::PersonStand& stand) {
+  const control::Vector3 right(std::sin(stand.yaw), -std::cos(stand.yaw), 0.0);
+  control::Vector3 base = shoulder - stand.shoulder_side * right;
+  base.z() = kFloorZ;
+  control::Isometry torso = control::Isometry::Identity();
+  torso.linear() = Eigen::AngleAxisd(stand.yaw, control::Vector3::UnitZ()).toRotationMatrix();
+  torso.translation() = base;
+  return torso;
+}
 }  // namespace
 
 CycleSettings defaultCycleSettings() {
@@ -81,6 +93,9 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
     ps.forearm_radius = settings.collision.person.forearm_radius;
     ps.upper_arm_radius = settings.collision.person.upper_arm_radius;
     ps.hand_radius = 0.5 * settings.collision.person.hand_size.maxCoeff();
+    if (settings.stand.declared)
+      ps.trunk = trunkObstacles(settings.collision.person.trunk, settings.collision.person.free_arm_radius);
+    if (collision_) ps.keeps = personKeeps(collision_->collisionModel());
     planning_ = std::make_unique<GraspPlanning>(controller_.model(), ps);
     machine_->setPlanner(planning_.get());
   }
@@ -94,7 +109,10 @@ void HandoverCycle::plan() {
   // once the reach's end is known the arm heads for one grasp there: no switching on the way
   const perception::ReachPrediction& reach = reach_.prediction();
   planning_->holdObjectChoice(adapter_.anticipatingRest() && (reach.lead >= 1.0 || !reach.reaching));
-  planning_->update(adapter_.anticipatingRest() ? led_ : *estimate_, control_in_.q, adapter_.payloadSet());
+  const perception::PerceptionEstimate& est = adapter_.anticipatingRest() ? led_ : *estimate_;
+  control::Isometry torso;
+  if (settings_.stand.declared) torso = torsoUnderShoulder(est.human.upper_arm.translation(), settings_.stand);
+  planning_->update(est, control_in_.q, adapter_.payloadSet(), settings_.stand.declared ? &torso : nullptr);
   machine_->plan();  // the carry request of the last step, if any
 }
 
@@ -163,15 +181,7 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   env.forearm_length = settings_.forearm_length;
   env.upper_arm_length = settings_.upper_arm_length;
   if (settings_.stand.declared) {
-    // the trunk is not tracked: it stands under the tracked shoulder, facing
-    // the declared way, on the floor (the torso frame of io::HumanBodyPoses)
-    const double yaw = settings_.stand.yaw;
-    const Eigen::Vector3d right(std::sin(yaw), -std::cos(yaw), 0.0);
-    Eigen::Vector3d base = est.human.upper_arm.translation() - settings_.stand.shoulder_side * right;
-    base.z() = kFloorZ;
-    env.torso = Eigen::Isometry3d::Identity();
-    env.torso.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-    env.torso.translation() = base;
+    env.torso = torsoUnderShoulder(est.human.upper_arm.translation(), settings_.stand);
     env.trunk_valid = env.person_valid;
   }
   env.hand_velocity = hand_vel_.velocity();

@@ -48,6 +48,7 @@ double armClearance(const Model& model, const ChainPoses& poses, const ObstacleC
     for (int k = 0; k < num_obstacles; ++k) {
       const ObstacleCapsule& o = obstacles[k];
       if (o.gripper_works_here && c.role == CapsuleRole::kFingertip) continue;
+      if (o.palm_works_here && c.role != CapsuleRole::kArm) continue;
       best = std::min(best, capsuleDistance(poses, c, o));
     }
   }
@@ -59,9 +60,24 @@ double workZoneClearance(const Model& model, const ChainPoses& poses, const Obst
   double best = std::numeric_limits<double>::infinity();
   for (int k = 0; k < num_obstacles; ++k) {
     const ObstacleCapsule& o = obstacles[k];
-    if (!o.gripper_works_here) continue;
+    if (!o.gripper_works_here || o.palm_works_here) continue;
     for (const Capsule& c : model.capsules)
       if (c.role != CapsuleRole::kFingertip) best = std::min(best, capsuleDistance(poses, c, o));
+  }
+  return best;
+}
+
+double personBodyClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
+                          int num_obstacles) {
+  double best = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < num_obstacles; ++k) {
+    const ObstacleCapsule& o = obstacles[k];
+    for (const Capsule& c : model.capsules) {
+      // the gripper works in the person's hand (workZoneClearance); the arm's links keep clear of it
+      if (o.gripper_works_here && c.role != CapsuleRole::kArm) continue;
+      const double keep = c.role == CapsuleRole::kArm ? o.keep_arm : o.keep_gripper;
+      best = std::min(best, capsuleDistance(poses, c, o) - keep);
+    }
   }
   return best;
 }

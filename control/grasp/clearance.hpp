@@ -20,6 +20,16 @@ struct ObstacleCapsule {
   /// Counted against the fingers too, it was the nearest obstacle of every
   /// grasp in the hand and hid how close each put the palm to the hand.
   bool gripper_works_here = false;
+  /// The whole gripper works here (the hand a give puts the object into: the
+  /// palm comes to it with the object): only the arm's links are measured
+  /// against it. Implies gripper_works_here.
+  bool palm_works_here = false;
+  /// m: how far the collision constraints keep the arm's capsules (keep_arm)
+  /// and the gripper's, palm and fingers (keep_gripper), from this obstacle
+  /// (their pair's margin, sensing budget and sDist): a configuration nearer
+  /// than that is one the arm cannot reach (personBodyClearance).
+  double keep_arm = 0.0;
+  double keep_gripper = 0.0;
 };
 
 /// Smallest distance between the segments [p0, p1] and [q0, q1] (m).
@@ -38,6 +48,15 @@ double armClearance(const Model& model, const ChainPoses& poses, const ObstacleC
 /// sit in the person's hand at that grasp.
 double workZoneClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
                          int num_obstacles);
+
+/// Smallest surface distance between any of the model's capsules, the
+/// fingertips included, and the person's body (the forearm, upper arm and
+/// trunk; the hand where the fingers work only for the arm's capsules),
+/// beyond what the collision constraints keep from each
+/// (ObstacleCapsule::keep_arm, keep_gripper), m; negative: the arm would have
+/// to come nearer than its constraints let it; +infinity without obstacles.
+double personBodyClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
+                          int num_obstacles);
 
 /// Lowest point (world z, m) of the capsules of bodies `first_body`.. (the
 /// base and link 1 stand on the table and are left out with first_body = 2).

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "control/grasp/clearance.hpp"
 #include "control/grasp/shape_grasps.hpp"
 #include "runtime/grasp_planning.hpp"
 #include "tests/control/grasp/panda_fixture.hpp"
@@ -183,6 +184,112 @@ TEST(GraspPlanning, AHandBeyondAnUprightPresentationGetsATiltedOne) {
   EXPECT_NEAR(tilt, s.config.presentation_tilt, 1e-9);
   const control::Isometry tcp = tcpPose(panda(), tilting.handPlan().q_target);
   EXPECT_LT((tcp.translation() - (e.human.hand * tcp_in_hand).translation()).norm(), 1e-3);
+}
+}  // namespace
+}  // namespace handover::runtime
+
+namespace handover::runtime {
+namespace {
+// the trunk as selector capsules: inside the collision model's torso box,
+// reaching its top, bottom, front and sides; the head and the free arm as declared
+TEST(GraspPlanning, TheTrunkCapsulesFillTheTorsoBoxWithoutLeavingIt) {
+  control::PersonTrunk trunk;  // a 1.75 m person
+  const std::vector<cg::ObstacleCapsule> caps = trunkObstacles(trunk, 0.045);
+  ASSERT_EQ(caps.size(), 4u);
+  ASSERT_LE(static_cast<int>(caps.size()), kMaxTrunkObstacles);
+  const control::Vector3 half = 0.5 * trunk.torso_size;
+  const control::Vector3 centre(0.0, 0.0, trunk.torso_centre);
+  control::Vector3 lo = control::Vector3::Constant(1e9), hi = -lo;
+  for (int k = 0; k < 2; ++k) {
+    const cg::ObstacleCapsule& c = caps[static_cast<std::size_t>(k)];
+    for (const control::Vector3& p : {c.a, c.b})
+      for (int axis = 0; axis < 3; ++axis)
+        for (double s : {-1.0, 1.0}) {
+          const control::Vector3 surface = p + s * c.radius * control::Vector3::Unit(axis) - centre;
+          EXPECT_LE(std::abs(surface(axis)), half(axis) + 1e-12);
+          lo(axis) = std::min(lo(axis), surface(axis));
+          hi(axis) = std::max(hi(axis), surface(axis));
+        }
+  }
+  EXPECT_TRUE(lo.isApprox(-half, 1e-12)) << lo.transpose();
+  EXPECT_TRUE(hi.isApprox(half, 1e-12)) << hi.transpose();
+  EXPECT_EQ(caps[2].a, control::Vector3(0.0, 0.0, trunk.head_centre));
+  EXPECT_EQ(caps[2].radius, trunk.head_radius);
+  EXPECT_EQ(caps[3].a, trunk.free_arm_top);
+  EXPECT_EQ(caps[3].b, trunk.free_arm_bottom);
+  for (const cg::ObstacleCapsule& c : caps) EXPECT_FALSE(c.gripper_works_here);
+}
+
+// a person whose chest stands where the unobstructed choice puts the arm: with
+// the trunk known, no configuration the planner accepts comes nearer the
+// trunk than the collision constraints keep the arm from it
+TEST(GraspPlanning, NoPlannedConfigurationPressesTheArmIntoThePersonsTrunk) {
+  GraspPlanningSettings s = bottleSettings(true);
+  s.trunk = trunkObstacles(control::PersonTrunk{}, 0.045);
+  s.keeps.trunk = {0.04, 0.04};  // what config/collision.yaml's person_trunk rule keeps
+  const control::Vector3 at(0.55, 0.1, 0.35);
+  GraspPlanning free_planning(panda(), s);
+  free_planning.update(offered(0.1, at), readyConfiguration(), false);
+  ASSERT_TRUE(free_planning.objectPlan().valid);
+  // the torso's near face through the elbow of that choice, the person facing the robot
+  cg::ChainPoses poses;
+  cg::chainPoses(panda(), free_planning.objectPlan().q_target, poses);
+  const control::Vector3 elbow = poses.oMb[4].translation();
+  control::Isometry torso = control::Isometry::Identity();
+  torso.linear() = Eigen::AngleAxisd(M_PI, control::Vector3::UnitZ()).toRotationMatrix();  // facing -x
+  torso.translation() = elbow + control::Vector3(0.5 * control::PersonTrunk{}.torso_size.x(), 0.0, 0.0) -
+                        control::Vector3(0.0, 0.0, control::PersonTrunk{}.torso_centre);
+  std::vector<cg::ObstacleCapsule> world;
+  for (cg::ObstacleCapsule c : s.trunk) {
+    c.a = torso * c.a;
+    c.b = torso * c.b;
+    c.keep_arm = s.keeps.trunk.arm;
+    c.keep_gripper = s.keeps.trunk.gripper;
+    world.push_back(c);
+  }
+  const double floor = 0.0;  // beyond what the constraints keep
+  ASSERT_LT(cg::personBodyClearance(panda(), poses, world.data(), static_cast<int>(world.size())), floor);
+
+  GraspPlanning planning(panda(), s);
+  planning.update(offered(0.1, at), readyConfiguration(), false, &torso);
+  int feasible = 0;
+  for (const cg::CandidateEvaluation& e : planning.objectSelector().evaluations()) {
+    if (!e.feasible) continue;
+    ++feasible;
+    cg::chainPoses(panda(), e.q_grasp, poses);
+    EXPECT_GE(cg::personBodyClearance(panda(), poses, world.data(), static_cast<int>(world.size())), floor);
+  }
+  EXPECT_GT(feasible, 0);  // the arm reaches the bottle another way
+  ASSERT_TRUE(planning.objectPlan().valid);
+  cg::chainPoses(panda(), planning.objectPlan().q_target, poses);
+  EXPECT_GE(cg::personBodyClearance(panda(), poses, world.data(), static_cast<int>(world.size())), floor);
+}
+}  // namespace
+}  // namespace handover::runtime
+
+namespace handover::runtime {
+namespace {
+// what the planner keeps from the person is what the shipped collision rules keep
+TEST(GraspPlanning, KeepsWhatTheShippedCollisionRulesKeepFromThePerson) {
+  const control::CollisionConfig cfg = control::loadCollisionConfig(control::defaultCollisionConfigPath());
+  const control::CollisionModel model = control::buildCollisionModel(panda(), cfg);
+  const PersonKeeps k = personKeeps(model);
+  const double budget = cfg.sensing_error.budget();
+  ASSERT_GT(budget, 0.0);
+  // the arm keeps the person margin, the sensing budget and the default sDist from every part
+  const double arm = cfg.person.margin + budget + cfg.defaults.s_dist;
+  EXPECT_NEAR(k.hand.arm, arm, 1e-12);
+  EXPECT_NEAR(k.forearm.arm, arm, 1e-12);
+  EXPECT_NEAR(k.upper_arm.arm, arm, 1e-12);
+  EXPECT_NEAR(k.trunk.arm, arm, 1e-12);
+  EXPECT_NEAR(k.trunk.gripper, arm, 1e-12);
+  EXPECT_NEAR(k.upper_arm.gripper, arm, 1e-12);
+  // the gripper comes nearer the forearm that rises from the hand (its own rule)
+  const auto rule = std::find_if(cfg.pairs.begin(), cfg.pairs.end(),
+                                 [](const control::PairRule& r) { return r.name == "person_forearm_gripper"; });
+  ASSERT_NE(rule, cfg.pairs.end());
+  EXPECT_NEAR(k.forearm.gripper, rule->margin + budget + rule->damper.s_dist, 1e-12);
+  EXPECT_LT(k.forearm.gripper, k.forearm.arm);
 }
 }  // namespace
 }  // namespace handover::runtime

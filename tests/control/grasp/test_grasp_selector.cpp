@@ -278,6 +278,50 @@ TEST(GraspSelector, ABallOnAPalmIsNotTakenWithTheGrippersPalmInTheHand) {
   }
 }
 
+// the person's forearm where the chosen grasp puts a finger: that grasp (and every other that
+// would bring a capsule, the fingers' included, nearer the arm than the collision constraints
+// let the robot go) is no grasp, and the selection takes another
+TEST(GraspSelector, AGraspThatPutsAFingerOnThePersonsForearmIsNotTaken) {
+  const Model& model = testing::panda();
+  std::vector<GraspSpec> specs = shapeGraspSpecs(PrimitiveShape::kSphere, {0.0255});
+  GraspSelector selector(model, specs, testing::shippedConfig());
+  const Isometry X_obj = bottleAt(Vector3(0.55, 0.0, 0.30));
+  const GraspChoice free_choice = selector.update(X_obj, testing::readyConfiguration());
+  ASSERT_TRUE(free_choice.valid);
+  // a forearm capsule through that grasp's fingertip capsule
+  ChainPoses poses;
+  chainPoses(model, free_choice.q_grasp, poses);
+  Vector3 tip = Vector3::Zero();
+  bool found = false;
+  for (const Capsule& c : model.capsules) {
+    if (c.role != CapsuleRole::kFingertip) continue;
+    tip = poses.oMb[c.body] * c.b;
+    found = true;
+  }
+  ASSERT_TRUE(found);
+  // the constraints keep the arm 4 cm from it, the gripper 5 mm
+  ObstacleCapsule forearm{tip - Vector3(0, 0, 0.1), tip + Vector3(0, 0, 0.1), 0.02};
+  forearm.keep_arm = 0.04;
+  forearm.keep_gripper = 0.005;
+  EXPECT_LT(personBodyClearance(model, poses, &forearm, 1), 0.0);
+  selector.reset();
+  const GraspChoice& c = selector.update(X_obj, testing::readyConfiguration(), &forearm, 1);
+  ASSERT_TRUE(c.valid);
+  EXPECT_NE(c.index, free_choice.index);
+  int feasible = 0;
+  for (const CandidateEvaluation& e : selector.evaluations()) {
+    if (!e.feasible) continue;
+    ++feasible;
+    chainPoses(model, e.q_grasp, poses);
+    EXPECT_GE(personBodyClearance(model, poses, &forearm, 1), 0.0);
+    // what that means in distances: every capsule at least its keep from the forearm
+    ObstacleCapsule bare = forearm;
+    bare.keep_arm = bare.keep_gripper = 0.0;
+    EXPECT_GE(personBodyClearance(model, poses, &bare, 1), forearm.keep_gripper - 1e-12);
+  }
+  EXPECT_GT(feasible, 0);
+}
+
 TEST(GraspSelector, ReportsNoChoiceForAnObjectOutOfReach) {
   const Model& model = testing::panda();
   GraspSelector selector(model, {bottleSideGrasp()}, testing::shippedConfig());
