@@ -202,9 +202,11 @@ CollisionConfig parse(const YamlReader& root) {
       if (when == "always") rule.scope = RuleScope::kAlways;
       else if (when == "apart") rule.scope = RuleScope::kApart;
       else if (when == "sharing") rule.scope = RuleScope::kSharing;
-      else w->fail("'" + when + "' is not one of: always | apart | sharing");
+      else if (when == "taking") rule.scope = RuleScope::kTaking;
+      else w->fail("'" + when + "' is not one of: always | apart | sharing | taking");
       if (r.has("enabled") && rule.scope != RuleScope::kAlways) w->fail("give `when` or `enabled`, not both");
-      if (rule.scope == RuleScope::kSharing) rule.enabled = false;  // nothing is shared at start-up
+      if (rule.scope == RuleScope::kSharing || rule.scope == RuleScope::kTaking)
+        rule.enabled = false;  // nothing is shared at start-up
     }
     r.finish();
     cfg.pairs.push_back(std::move(rule));

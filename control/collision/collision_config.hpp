@@ -39,9 +39,12 @@ struct DamperSettings {
 /// When a pair rule is on: always (unless switched at run time by name), only
 /// while the gripper and the person do not share the object (`apart`), or
 /// only while they do (`sharing`: the fingers close on, hold or present the
-/// object in the person's hand). The controller adapter switches the last
-/// two with the state machine's hand-clearance switch.
-enum class RuleScope { kAlways, kApart, kSharing };
+/// object in the person's hand), or only while they do and the person still
+/// carries it (`taking`: the robot's fingers close on the object in the
+/// person's hand; not while the robot carries it and a receiver's hand
+/// closes on it). The controller adapter switches the last three with the
+/// state machine's hand-clearance switch and the payload.
+enum class RuleScope { kAlways, kApart, kSharing, kTaking };
 
 struct PairRule {
   std::string name;
@@ -49,8 +52,8 @@ struct PairRule {
   std::vector<std::string> other;   ///< patterns / group names (already expanded)
   DamperSettings damper;
   double margin = 0.0;              ///< m, extra clearance around the other body
-  bool enabled = true;              ///< state at start-up (a `sharing` rule starts off)
-  RuleScope scope = RuleScope::kAlways;  ///< `when:` always | apart | sharing
+  bool enabled = true;              ///< state at start-up (a `sharing` or `taking` rule starts off)
+  RuleScope scope = RuleScope::kAlways;  ///< `when:` always | apart | sharing | taking
   int line = 0;                     ///< line in the file, for messages
 };
 

@@ -84,6 +84,7 @@ void ControllerAdapter::applyClearances() {
     if (i == object_rule_) continue;
     if (scope[i] == control::RuleScope::kApart) set(i, !hand_relaxed_);
     if (scope[i] == control::RuleScope::kSharing) set(i, hand_relaxed_);
+    if (scope[i] == control::RuleScope::kTaking) set(i, hand_relaxed_ && !payload_set_);
   }
 }
 

@@ -121,6 +121,30 @@ TEST(HandoverCycle, SharingTheObjectSwitchesTheScopedRules) {
   EXPECT_TRUE(cycle.collision().ruleEnabled(cycle.handGripperRule()));
 }
 
+// The gripper keeps off the hand whose object its fingers close on (a take:
+// the person still carries it), not off a receiver's hand closing on the
+// object the robot carries (a give: the payload is set)
+TEST(HandoverCycle, TheTakingRuleIsOnOnlyWhileSharingAnObjectThePersonCarries) {
+  HandoverCycle cycle(defaultCycleSettings());
+  const auto& cm = cycle.collision().collisionModel();
+  const int taking = cm.ruleIndex("person_hand_gripper_taking");
+  ASSERT_GE(taking, 0);
+  ASSERT_EQ(cm.rule_scope[static_cast<std::size_t>(taking)], control::RuleScope::kTaking);
+  ControllerAdapter& adapter = cycle.adapter();
+  EXPECT_FALSE(cycle.collision().ruleEnabled(taking));  // apart
+  adapter.relaxHandClearance(true);
+  EXPECT_TRUE(cycle.collision().ruleEnabled(taking));   // the fingers close on the person's object
+  adapter.setPayload(0.5, fsm::Vector3::Zero());
+  EXPECT_FALSE(cycle.collision().ruleEnabled(taking));  // the robot carries it
+  adapter.clearPayload();
+  EXPECT_TRUE(cycle.collision().ruleEnabled(taking));
+  adapter.relaxHandClearance(false);
+  EXPECT_FALSE(cycle.collision().ruleEnabled(taking));
+  // no sensing budget on it: the hand and the object are where the fingers work
+  for (const control::CollisionPair& p : cm.pairs)
+    if (p.rule == taking) EXPECT_EQ(p.margin, 0.0);
+}
+
 // Trackers do not see the trunk: with a declared stand the cycle places it
 // under the tracked shoulder (the upper arm's origin), shifted to the body's
 // midline, facing the declared way, on the floor; without one it stays out.

@@ -81,5 +81,22 @@ TEST(CollisionEndToEnd, PersonStandingCloseIsNeverTouched) {
   EXPECT_EQ(s.limit_violations.position + s.limit_violations.velocity + s.limit_violations.torque, 0);
 }
 
+// A ball resting on a palm, taken from above (h2r_ball_on_palm, from the
+// benchmark): the fingers close around it just above the person's fingers.
+// While the gripper shares the object with the hand it still keeps off the
+// hand itself (config/collision.yaml person_hand_gripper_taking); without
+// that rule the fingertips pressed the fingers under the ball.
+TEST(CollisionEndToEnd, FingersClosingOnABallOnAPalmDoNotPressThePalm) {
+  testing::ScratchDir dir("collision_ball_on_palm");
+  const scenario::Scenario sc = scenario::parseScenario(testing::repoPath("tests/app/run/data/h2r_ball_on_palm.yaml"));
+  app::RunOptions opt;
+  opt.out_dir = dir.file("out");
+  opt.plots = false;
+  const app::RunSummary s = app::runScenario(sc, opt);
+  EXPECT_EQ(s.human_contacts, 0) << app::formatSummary(s);
+  EXPECT_EQ(s.penetration_time, 0.0);
+  EXPECT_EQ(s.outcome, "success") << app::formatSummary(s);
+}
+
 }  // namespace
 }  // namespace handover

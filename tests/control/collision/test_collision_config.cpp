@@ -76,7 +76,7 @@ pairs:
   EXPECT_EQ(c.pairs[2].scope, RuleScope::kSharing);
   EXPECT_FALSE(c.pairs[2].enabled);  // nothing is shared at start-up
   std::string e = errorOf("pairs:\n  - {name: a, robot: panda_hand, other: table, when: sometimes}\n");
-  EXPECT_NE(e.find("'sometimes' is not one of: always | apart | sharing"), std::string::npos) << e;
+  EXPECT_NE(e.find("'sometimes' is not one of: always | apart | sharing | taking"), std::string::npos) << e;
   EXPECT_NE(e.find("bad.yaml:2"), std::string::npos) << e;
   e = errorOf("pairs:\n  - {name: a, robot: panda_hand, other: table, when: apart, enabled: false}\n");
   EXPECT_NE(e.find("not both"), std::string::npos) << e;
