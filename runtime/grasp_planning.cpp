@@ -15,6 +15,9 @@ cg::GraspSelectionConfig presentationSelectionConfig(cg::GraspSelectionConfig co
   // a pre-grasp 8 cm back along the approach axis, out of reach above a high
   // hand, left the presentation unplanned and the arm's wrist in its limit
   config.candidates.pre_grasp_standoff = 0.0;
+  // the receiver comes to the object: their arm where it is now does not rule a presentation out
+  // (seeds 1 and 12 with the rule: 19 gives lost, 7 gained)
+  config.reject_inside_keeps = false;
   return config;
 }
 
@@ -132,11 +135,11 @@ int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool 
   keep(obstacles_[0], settings_.keeps.forearm);
   obstacles_[1] = capsule(human.upper_arm, settings_.upper_arm_length, settings_.upper_arm_radius);
   keep(obstacles_[1], settings_.keeps.upper_arm);
-  // the hand that holds the object: the fingers work in it, the palm and the arm keep clear; the
-  // hand that receives it: the gripper brings the object into it, the arm keeps clear
+  // a give scores the presentation against the receiver's arm only (it comes to the object)
+  if (giving) return 2;
+  // the hand that holds the object: the fingers work in it, the palm and the arm keep clear
   obstacles_[2] = capsule(human.hand, 0.0, settings_.hand_radius);
   obstacles_[2].gripper_works_here = true;
-  obstacles_[2].palm_works_here = giving;
   keep(obstacles_[2], settings_.keeps.hand);
   int n = 3;
   if (torso == nullptr) return n;

@@ -9,14 +9,14 @@
 // free axis, the gripper's half-turn twins) the one the arm reaches best,
 // avoiding the person's forearm, upper arm and trunk (no configuration nearer
 // them than the collision constraints keep the arm: PersonKeeps), the hand
-// where the fingers work kept clear of the palm and the arm's links (the
-// receiver's hand, for a give, of the arm's links only).
+// where the fingers work kept clear of the palm and the arm's links.
 // Give: while the robot holds the object, each new hand sample re-selects the
 // presentation: the declared TCP-in-hand frame turned about the hand's z axis
 // (the receiver takes the object at any turn about the vertical), upright or
 // tilted by config.presentation_tilt in any direction (upright preferred by
 // config.declared_preference), no twins (the held object would turn with the
-// gripper).
+// gripper), scored against the receiver's arm, none ruled out by it (the
+// receiver comes to the object: presentationSelectionConfig).
 //
 // Frames: world; offsets in the observed frame (object or hand). Units: m, rad.
 // Real-time: the constructor allocates; update() and uprightPlacement() do
@@ -103,8 +103,8 @@ class GraspPlanning : public fsm::PlannerInterface {
 
  private:
   static void copyChoice(const control::grasp::GraspChoice& c, fsm::TrackingPlan& plan);
-  /// Fills obstacles_ with the person's arm, hand (taking or receiving the
-  /// object: `giving`) and trunk; returns their number.
+  /// Fills obstacles_ with the person's arm, and for a take (!giving) their
+  /// hand and trunk; returns their number.
   int personObstacles(const perception::HumanEstimate& human, bool giving, const control::Isometry* torso);
 
   const control::Model& model_;

@@ -48,7 +48,6 @@ double armClearance(const Model& model, const ChainPoses& poses, const ObstacleC
     for (int k = 0; k < num_obstacles; ++k) {
       const ObstacleCapsule& o = obstacles[k];
       if (o.gripper_works_here && c.role == CapsuleRole::kFingertip) continue;
-      if (o.palm_works_here && c.role != CapsuleRole::kArm) continue;
       best = std::min(best, capsuleDistance(poses, c, o));
     }
   }
@@ -60,7 +59,7 @@ double workZoneClearance(const Model& model, const ChainPoses& poses, const Obst
   double best = std::numeric_limits<double>::infinity();
   for (int k = 0; k < num_obstacles; ++k) {
     const ObstacleCapsule& o = obstacles[k];
-    if (!o.gripper_works_here || o.palm_works_here) continue;
+    if (!o.gripper_works_here) continue;
     for (const Capsule& c : model.capsules)
       if (c.role != CapsuleRole::kFingertip) best = std::min(best, capsuleDistance(poses, c, o));
   }

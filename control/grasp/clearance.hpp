@@ -20,10 +20,6 @@ struct ObstacleCapsule {
   /// Counted against the fingers too, it was the nearest obstacle of every
   /// grasp in the hand and hid how close each put the palm to the hand.
   bool gripper_works_here = false;
-  /// The whole gripper works here (the hand a give puts the object into: the
-  /// palm comes to it with the object): only the arm's links are measured
-  /// against it. Implies gripper_works_here.
-  bool palm_works_here = false;
   /// m: how far the collision constraints keep the arm's capsules (keep_arm)
   /// and the gripper's, palm and fingers (keep_gripper), from this obstacle
   /// (their pair's margin, sensing budget and sDist): a configuration nearer

@@ -48,6 +48,11 @@ struct GraspSelectionConfig {
   /// arm's reach. 0 = upright only. The upright presentation keeps
   /// declared_preference.
   double presentation_tilt = 30.0 * M_PI / 180.0;
+  /// Not a file key: reject candidates nearer the person's body than the
+  /// obstacles' keeps (personBodyClearance < 0). Off for presentations
+  /// (presentationSelectionConfig): the receiver's hand and arm come to the
+  /// object, so where they are when it is chosen is not where they will be.
+  bool reject_inside_keeps = true;
 };
 
 /// Reads and validates a config file (see config/grasp_selection.yaml for every key).

@@ -52,7 +52,7 @@ bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, 
   // nor one that brings any of it, the fingers too, nearer the person's arm or trunk than the collision
   // constraints let it go: the arm stopped short of it until the person gave up (g1_00184, a
   // ball on a palm taken at 45 degrees over the wrist)
-  if (personBodyClearance(model_, poses, obstacles, num_obstacles) < 0.0) return false;
+  if (config_.reject_inside_keeps && personBodyClearance(model_, poses, obstacles, num_obstacles) < 0.0) return false;
   ScoreTerms t = scoreConfiguration(model_, frame_, poses, g.q, q_now, obstacles, num_obstacles, config_.score);
   // the arm must pass the pre-grasp too: the worse margin and clearance count
   t.joint_margin = std::min(t.joint_margin, pre.joint_margin);

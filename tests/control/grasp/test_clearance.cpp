@@ -93,34 +93,6 @@ TEST(Clearance, TheHandWhereTheFingersWorkCountsOnlyAgainstThePalmAndTheArm) {
   EXPECT_LT(workZoneClearance(model, poses, &hand, 1), 0.0);
 }
 
-// the receiver's hand a give puts the object into: the whole gripper works
-// there, only the arm's links are measured against it, and they keep what
-// the collision constraints keep
-TEST(Clearance, TheHandThatReceivesTheObjectCountsOnlyAgainstTheArmsLinks) {
-  const Model& model = testing::panda();
-  ChainPoses poses;
-  chainPoses(model, testing::readyConfiguration(), poses);
-  const Isometry tcp = chainFramePose(model, poses, model.frameId("tcp"));
-  // in the palm: a work zone the palm overlaps
-  ObstacleCapsule hand{tcp.translation() + Vector3(0, 0, 0.05), tcp.translation() + Vector3(0, 0, 0.05), 0.02};
-  hand.gripper_works_here = true;
-  ASSERT_LT(workZoneClearance(model, poses, &hand, 1), 0.0);
-  hand.palm_works_here = true;
-  EXPECT_EQ(workZoneClearance(model, poses, &hand, 1), std::numeric_limits<double>::infinity());
-  double arm_only = std::numeric_limits<double>::infinity();
-  for (const Capsule& c : model.capsules) {
-    if (c.role != CapsuleRole::kArm) continue;
-    const Vector3 a = poses.oMb[c.body] * c.a, b = poses.oMb[c.body] * c.b;
-    arm_only = std::min(arm_only, sampledDistance(a, b, hand.a, hand.b) - c.radius - hand.radius);
-  }
-  ASSERT_TRUE(std::isfinite(arm_only));
-  EXPECT_NEAR(armClearance(model, poses, &hand, 1), arm_only, 3e-3);
-  EXPECT_NEAR(personBodyClearance(model, poses, &hand, 1), arm_only, 3e-3);
-  hand.keep_arm = 0.04;
-  hand.keep_gripper = 1.0;  // the gripper is not measured: its keep does not count
-  EXPECT_NEAR(personBodyClearance(model, poses, &hand, 1), arm_only - 0.04, 3e-3);
-}
-
 TEST(Scores, ManipulabilityVanishesAtTheStretchedSingularity) {
   const Model& model = testing::panda();
   ChainPoses poses;
