@@ -2,16 +2,19 @@
 // update per new hand sample while the robot holds the object, the hand
 // swaying at 60 Hz in front of the robot. Arg: the presentation tilt in
 // degrees (0: upright only, 12 turns about the hand's vertical; 30, as
-// shipped: the upright and the tilted presentation, 24 candidates); second
-// arg 1: the person's trunk 0.45 m behind the hand, with the clearances the
-// shipped collision rules keep (4 more obstacle capsules). Runs at the sensor
-// rate, outside the 1 ms control step (HandoverCycle::plan).
+// shipped: the upright and the tilted presentation, 24 candidates). Runs at
+// the sensor rate, outside the 1 ms control step (HandoverCycle::plan).
+// BM_TakePlanning: a take's grasp per object sample, a bottle (declared side
+// grasp and the cylinder's shape families) swaying in a person's hand, their
+// arm and trunk as obstacles with what the shipped collision rules keep.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <string>
 
+#include "control/collision/collision_model.hpp"
 #include "control/grasp/grasp_selection_config.hpp"
+#include "control/grasp/shape_grasps.hpp"
 #include "runtime/grasp_planning.hpp"
 
 namespace {
@@ -51,29 +54,58 @@ void BM_PresentationPlanning(benchmark::State& state) {
   s.presentation.linear() = top.placement.linear();
   s.presentation.translation() = control::Vector3(0.0, 0.0, 0.13);
   s.presentation_pivot = control::Vector3(0.0, 0.0, 0.05);
-  const bool trunk = state.range(1) != 0;
-  control::Isometry torso = control::Isometry::Identity();  // facing the robot, 0.45 m beyond the hand
-  torso.linear() = Eigen::AngleAxisd(M_PI, control::Vector3::UnitZ()).toRotationMatrix();
-  torso.translation() = control::Vector3(1.07, 0.0, -0.75);
-  if (trunk) {
-    s.trunk = runtime::trunkObstacles(control::PersonTrunk{}, 0.045);
-    s.keeps.forearm = {0.04, 0.021};
-    s.keeps.upper_arm = s.keeps.trunk = {0.04, 0.04};
-  }
   runtime::GraspPlanning planning(pandaModel(), s);
   control::Vector7 q;
   q << 0.0, -0.785398, 0.0, -2.356194, 0.0, 1.570796, 0.785398;
   int k = 0;
-  planning.update(handSample(k++), q, true, trunk ? &torso : nullptr);  // the cold first update is not measured
+  planning.update(handSample(k++), q, true);  // the cold first update is not measured
   long planned = 0, updates = 0;
   for (auto _ : state) {
-    planning.update(handSample(k++), q, true, trunk ? &torso : nullptr);
+    planning.update(handSample(k++), q, true);
     planned += planning.handPlan().valid;
     ++updates;
     benchmark::DoNotOptimize(planning.handPlan().q_target.data());
   }
   state.counters["planned"] = static_cast<double>(planned) / static_cast<double>(updates);
 }
-BENCHMARK(BM_PresentationPlanning)->Args({0, 0})->Args({30, 0})->Args({30, 1})->Unit(benchmark::kMicrosecond);
+void BM_TakePlanning(benchmark::State& state) {
+  runtime::GraspPlanningSettings s;
+  s.config = control::grasp::loadGraspSelectionConfig(std::string(HANDOVER_SOURCE_DIR) + "/config/grasp_selection.yaml");
+  control::grasp::GraspSpec side;
+  side.placement.linear() = Eigen::AngleAxisd(M_PI / 2, control::Vector3::UnitY()).toRotationMatrix();
+  side.has_free_axis = true;
+  side.preference = s.config.declared_preference;
+  s.object_grasps.push_back(side);
+  for (const auto& g : control::grasp::shapeGraspSpecs(control::grasp::PrimitiveShape::kCylinder, {0.03, 0.20}))
+    s.object_grasps.push_back(g);
+  const control::CollisionConfig cc = control::loadCollisionConfig(control::defaultCollisionConfigPath());
+  s.trunk = runtime::trunkObstacles(cc.person.trunk, cc.person.free_arm_radius);
+  s.keeps = runtime::personKeeps(control::buildCollisionModel(pandaModel(), cc));
+  runtime::GraspPlanning planning(pandaModel(), s);
+  control::Isometry torso = control::Isometry::Identity();  // facing the robot, 0.45 m beyond the hand
+  torso.linear() = Eigen::AngleAxisd(M_PI, control::Vector3::UnitZ()).toRotationMatrix();
+  torso.translation() = control::Vector3(1.07, 0.0, -0.75);
+  control::Vector7 q;
+  q << 0.0, -0.785398, 0.0, -2.356194, 0.0, 1.570796, 0.785398;
+  auto sample = [](int k) {
+    perception::PerceptionEstimate e = handSample(k);
+    e.object.holder = perception::ObjectHolder::Person;
+    e.object.pose.translation() = e.human.hand.translation() + control::Vector3(0.0, 0.0, 0.08);
+    return e;
+  };
+  int k = 0;
+  planning.update(sample(k++), q, false, &torso);  // the cold first update is not measured
+  long planned = 0, updates = 0;
+  for (auto _ : state) {
+    planning.update(sample(k++), q, false, &torso);
+    planned += planning.objectPlan().valid;
+    ++updates;
+    benchmark::DoNotOptimize(planning.objectPlan().q_target.data());
+  }
+  state.counters["planned"] = static_cast<double>(planned) / static_cast<double>(updates);
+}
+BENCHMARK(BM_TakePlanning)->Unit(benchmark::kMicrosecond);
+
+BENCHMARK(BM_PresentationPlanning)->Arg(0)->Arg(30)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
