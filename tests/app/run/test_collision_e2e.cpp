@@ -19,6 +19,15 @@
 namespace handover {
 namespace {
 
+/// Runs the scenario file at `repo_file` (a path in the repository) into a scratch folder, no plots.
+app::RunSummary runFile(const testing::ScratchDir& dir, const std::string& repo_file) {
+  const scenario::Scenario sc = scenario::parseScenario(testing::repoPath(repo_file));
+  app::RunOptions opt;
+  opt.out_dir = dir.file("out");
+  opt.plots = false;
+  return app::runScenario(sc, opt);
+}
+
 TEST(CollisionEndToEnd, ForearmInTheWayIsAvoided) {
   testing::ScratchDir dir("collision_e2e");
   const scenario::Scenario sc = scenario::parseScenario(testing::repoPath("scenes/scenarios/h2r_forearm_in_way.yaml"));
@@ -68,11 +77,7 @@ TEST(CollisionEndToEnd, ForearmInTheWayIsAvoided) {
 // the trunk is now a collision body, and the judge sees the true body.
 TEST(CollisionEndToEnd, PersonStandingCloseIsNeverTouched) {
   testing::ScratchDir dir("collision_close_stand");
-  const scenario::Scenario sc = scenario::parseScenario(testing::repoPath("scenes/scenarios/h2r_close_stand.yaml"));
-  app::RunOptions opt;
-  opt.out_dir = dir.file("out");
-  opt.plots = false;
-  const app::RunSummary s = app::runScenario(sc, opt);
+  const app::RunSummary s = runFile(dir, "scenes/scenarios/h2r_close_stand.yaml");
   std::printf("h2r_close_stand: outcome %s, human contacts %d, min_human_distance %.4f m, penetration %.3f s\n",
               s.outcome.c_str(), s.human_contacts, s.min_human_distance, s.penetration_time);
   EXPECT_EQ(s.human_contacts, 0) << app::formatSummary(s);
@@ -88,11 +93,7 @@ TEST(CollisionEndToEnd, PersonStandingCloseIsNeverTouched) {
 // that rule the fingertips pressed the fingers under the ball.
 TEST(CollisionEndToEnd, FingersClosingOnABallOnAPalmDoNotPressThePalm) {
   testing::ScratchDir dir("collision_ball_on_palm");
-  const scenario::Scenario sc = scenario::parseScenario(testing::repoPath("tests/app/run/data/h2r_ball_on_palm.yaml"));
-  app::RunOptions opt;
-  opt.out_dir = dir.file("out");
-  opt.plots = false;
-  const app::RunSummary s = app::runScenario(sc, opt);
+  const app::RunSummary s = runFile(dir, "tests/app/run/data/h2r_ball_on_palm.yaml");
   EXPECT_EQ(s.human_contacts, 0) << app::formatSummary(s);
   EXPECT_EQ(s.penetration_time, 0.0);
   EXPECT_EQ(s.outcome, "success") << app::formatSummary(s);
