@@ -44,8 +44,7 @@ std::vector<cg::GraspSpec> presentationSpecs(const control::Isometry& presentati
 PersonKeeps personKeeps(const control::CollisionModel& model) {
   PersonKeeps k;
   for (const control::CollisionPair& p : model.pairs) {
-    const control::RuleScope scope = model.rule_scope[static_cast<std::size_t>(p.rule)];
-    if (scope == control::RuleScope::kSharing || scope == control::RuleScope::kTaking) continue;
+    if (control::whileSharing(model.rule_scope[static_cast<std::size_t>(p.rule)])) continue;
     PersonKeeps::Keep* keep = nullptr;
     switch (model.bodies[static_cast<std::size_t>(p.other_body)].kind) {
       case control::CollisionBodyKind::kHumanHand: keep = &k.hand; break;

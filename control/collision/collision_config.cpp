@@ -205,8 +205,7 @@ CollisionConfig parse(const YamlReader& root) {
       else if (when == "taking") rule.scope = RuleScope::kTaking;
       else w->fail("'" + when + "' is not one of: always | apart | sharing | taking");
       if (r.has("enabled") && rule.scope != RuleScope::kAlways) w->fail("give `when` or `enabled`, not both");
-      if (rule.scope == RuleScope::kSharing || rule.scope == RuleScope::kTaking)
-        rule.enabled = false;  // nothing is shared at start-up
+      if (whileSharing(rule.scope)) rule.enabled = false;  // nothing is shared at start-up
     }
     r.finish();
     cfg.pairs.push_back(std::move(rule));

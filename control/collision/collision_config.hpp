@@ -46,6 +46,11 @@ struct DamperSettings {
 /// state machine's hand-clearance switch and the payload.
 enum class RuleScope { kAlways, kApart, kSharing, kTaking };
 
+/// A rule on only while the gripper shares the object with the person's hand
+/// (`sharing` or `taking`): off at start-up, never on with an `apart` rule,
+/// no sensing budget (robot and hand meet at the object by design).
+inline bool whileSharing(RuleScope s) { return s == RuleScope::kSharing || s == RuleScope::kTaking; }
+
 struct PairRule {
   std::string name;
   std::vector<std::string> robot;   ///< patterns / group names (already expanded)

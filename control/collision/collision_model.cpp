@@ -187,9 +187,8 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
         if (it != seen.end()) {
           if (it->second == static_cast<int>(r)) continue;  // e.g. "arm vs arm" lists both orders
           const RuleScope earlier = cfg.pairs[it->second].scope;
-          auto shared = [](RuleScope s) { return s == RuleScope::kSharing || s == RuleScope::kTaking; };
-          const bool exclusive = (earlier == RuleScope::kApart && shared(rule.scope)) ||
-                                 (shared(earlier) && rule.scope == RuleScope::kApart);
+          const bool exclusive = (earlier == RuleScope::kApart && whileSharing(rule.scope)) ||
+                                 (whileSharing(earlier) && rule.scope == RuleScope::kApart);
           // never on together (the pair's settings while apart and while sharing): both may list it
           if (!exclusive) {
             ruleError(cfg, rule, "pair '" + ra.link + "/" + ra.name + " - " + ob.name + "' is already listed by rule '" +
@@ -205,7 +204,7 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
         // the person is sensed: the pair also budgets the sensor's declared
         // error, except while the gripper shares the object with the person's
         // hand (`sharing` rules: there robot and hand meet at the object by design)
-        const bool budget = ob.isPerson() && rule.scope != RuleScope::kSharing && rule.scope != RuleScope::kTaking;
+        const bool budget = ob.isPerson() && !whileSharing(rule.scope);
         p.margin = rule.margin + (budget ? cfg.sensing_error.budget() : 0.0);
         cm.pairs.push_back(p);
       }

@@ -46,7 +46,7 @@ TEST(CollisionModel, RepositoryConfigResolves) {
     if (o.kind == CollisionBodyKind::kTable) {
       EXPECT_GE(a.body, 2);
     }
-    const bool sharing = cm.rule_scope[p.rule] == RuleScope::kSharing || cm.rule_scope[p.rule] == RuleScope::kTaking;
+    const bool sharing = whileSharing(cm.rule_scope[p.rule]);
     EXPECT_TRUE(
         unique.insert({std::min(p.robot_body, p.other_body), std::max(p.robot_body, p.other_body), sharing}).second);
   }
