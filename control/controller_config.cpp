@@ -98,8 +98,8 @@ std::vector<ElementEntry> defaultTaskEntries() {
 
 std::vector<ElementEntry> defaultConstraintEntries() {
   return {entry("joint_acceleration", "joint_acceleration_limit"), entry("joint_position", "joint_position_limit"),
-          entry("joint_velocity", "joint_velocity_limit"), entry("joint_torque", "joint_torque_limit"),
-          entry("collision", "collision")};
+          entry("joint_velocity", "joint_velocity_limit"), entry("gravity_hold", "gravity_hold_limit"),
+          entry("joint_torque", "joint_torque_limit"), entry("collision", "collision")};
 }
 
 ControllerConfig parseControllerConfig(const YamlReader& root) { return parseControllerConfig(root, defaultJointLimits()); }
@@ -163,6 +163,17 @@ ControllerConfig parseControllerConfig(const YamlReader& root, const JointLimits
     }
     if (auto t = section(*s, "torque")) {
       if (auto c = t->optionalChild("scale")) cfg.limits.torque_scale = c->checkRange(c->asDouble(), 1e-3, 1.0);
+      if (auto h = section(*t, "hold")) {
+        auto& g = cfg.limits.gravity_hold;
+        if (auto c = h->optionalChild("share")) g.share = c->checkRange(c->asDouble(), 0.05, 1.0);
+        if (auto c = h->optionalChild("interaction")) g.interaction = c->checkRange(c->asDouble(), 0.01, 0.5);
+        if (auto c = h->optionalChild("damper_offset")) g.damper_offset = c->checkRange(c->asDouble(), 0.0, 100.0);
+        if (auto c = h->optionalChild("recovery")) g.recovery = c->checkRange(c->asDouble(), 0.0, 10.0);
+        if (g.interaction >= g.share)
+          h->fail("interaction (" + std::to_string(g.interaction) + ") must be smaller than share (" +
+                  std::to_string(g.share) + ")");
+        h->finish();
+      }
       t->finish();
     }
     s->finish();

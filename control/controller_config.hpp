@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "config/yaml_reader.hpp"
+#include "control/constraints/gravity_hold_limit.hpp"
 #include "control/constraints/joint_position_limit.hpp"
 #include "control/model/joint_limits.hpp"
 #include "control/safety/limit_guard.hpp"
@@ -99,6 +100,9 @@ struct ControllerConfig {
     double velocity_braking = 0.0;
     double acceleration_scale = 1.0;
     double torque_scale = 1.0;
+    /// The most of each scaled torque limit gravity may take (GravityHoldLimit;
+    /// the start-up validation holds the start posture to the same share).
+    GravityHoldParams gravity_hold;
   } limits;
 
   struct Qp {

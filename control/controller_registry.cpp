@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "control/constraints/collision_constraint.hpp"
+#include "control/constraints/gravity_hold_limit.hpp"
 #include "control/constraints/joint_acceleration_limit.hpp"
 #include "control/constraints/joint_position_limit.hpp"
 #include "control/constraints/joint_torque_limit.hpp"
@@ -79,6 +80,10 @@ ControllerRegistry ControllerRegistry::shipped() {
   });
   r.addConstraint("joint_torque_limit", [](const ElementArgs& a) -> std::shared_ptr<Constraint> {
     return std::make_shared<JointTorqueLimit>(a.model, a.config.limits.torque_scale, a.name);
+  });
+  r.addConstraint("gravity_hold_limit", [](const ElementArgs& a) -> std::shared_ptr<Constraint> {
+    return std::make_shared<GravityHoldLimit>(a.model, a.config.limits.torque_scale, a.config.limits.gravity_hold,
+                                              a.name);
   });
   r.addConstraint("collision", [](const ElementArgs& a) -> std::shared_ptr<Constraint> {
     if (a.collision == nullptr) return nullptr;  // no scene here: no collision rows

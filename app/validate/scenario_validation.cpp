@@ -143,7 +143,8 @@ void validateScenario(const scenario::Scenario& sc) {
     }
   }
 
-  // gravity at rest takes at most kMaxGravityShare of each scaled torque limit,
+  // gravity at rest takes at most limits.torque.hold.share of each scaled torque limit
+  // (the share the gravity-hold constraint keeps the arm within),
   // at the start (with the object if the robot holds it) and at the posture
   // target carrying the object (where a taken object goes)
   auto checkGravity = [&](const control::Vector7& q, bool payload, const scenario::SourceRef& where, const char* what) {
@@ -158,10 +159,11 @@ void validateScenario(const scenario::Scenario& sc) {
     control::computeAll(model, data, q, control::Vector7::Zero());
     for (int j = 0; j < control::kArmDofs; ++j) {
       const double limit = cfg.limits.torque_scale * model.tau_max[j];
-      if (std::abs(data.h[j]) > kMaxGravityShare * limit) {
+      const double share = cfg.limits.gravity_hold.share;
+      if (std::abs(data.h[j]) > share * limit) {
         scenario::failAt(where, std::string("gravity at ") + what + " needs " + fmt(std::abs(data.h[j])) +
                                     " N m at joint " + std::to_string(j + 1) + ", more than " +
-                                    fmt(kMaxGravityShare * 100) + "% of its limit " + fmt(limit) +
+                                    fmt(share * 100) + "% of its limit " + fmt(limit) +
                                     " N m (limits.torque.scale " + fmt(cfg.limits.torque_scale) + ")");
       }
     }

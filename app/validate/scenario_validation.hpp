@@ -22,8 +22,6 @@ namespace handover::app {
 
 /// The simulator's step (scenes/handover_scene.xml <option timestep>), s.
 constexpr double kSceneTimestep = 0.001;
-/// Fraction of each scaled torque limit gravity may take at rest.
-constexpr double kMaxGravityShare = 0.8;
 
 /// The controller config of `sc` (its file with `set:` applied), validated.
 control::ControllerConfig controllerConfigOf(const scenario::Scenario& sc);

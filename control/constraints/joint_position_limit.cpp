@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "control/constraints/bound_tightening.hpp"
+#include "control/constraints/velocity_damper.hpp"
 
 namespace handover::control {
 
@@ -22,35 +23,6 @@ void JointPositionLimit::reset() {
   xi_upper_.fill(0.0);
 }
 
-namespace {
-
-// Lowest admissible velocity away-from-limit coordinate for one side, where
-// the joint coordinate x grows away from the limit (d = x - limit) and x_dot
-// is its velocity. Returns the lower bound on x_ddot (or -inf when free).
-double sideBound(double d, double x_dot, double di, double ds, double offset, double recovery, double dt,
-                 double& xi) {
-  if (d >= di) {
-    xi = 0.0;
-    return -std::numeric_limits<double>::infinity();
-  }
-  const double span = di - ds;
-  if (xi <= 0.0) {
-    // entering: start the bound at the current approach speed, plus slack
-    const double approach = std::max(0.0, -x_dot);
-    const double gap = std::max(d - ds, 1e-9);
-    xi = approach * span / gap + offset * span;
-    xi = std::max(xi, 1e-9);
-  }
-  double v_min = -xi * (d - ds) / span;   // > 0 inside the safety zone: move out
-  v_min = std::min(v_min, recovery);
-  const double damper = (v_min - x_dot) / dt;
-  // never predict beyond ds/2 from the limit over the next step
-  const double position = 2.0 * (0.5 * ds - d - x_dot * dt) / (dt * dt);
-  return std::max(damper, position);
-}
-
-}  // namespace
-
 int JointPositionLimit::compute(const ControlContext& ctx, Eigen::Ref<Eigen::MatrixXd>, Eigen::Ref<Eigen::VectorXd>,
                                 Eigen::Ref<Eigen::VectorXd>, Eigen::Ref<Eigen::VectorXd> chi_lb,
                                 Eigen::Ref<Eigen::VectorXd> chi_ub) {
@@ -63,9 +35,9 @@ int JointPositionLimit::compute(const ControlContext& ctx, Eigen::Ref<Eigen::Mat
     const double off = params_.damper_offset;
     const double rec = params_.recovery_speed;
     // lower limit: x = q
-    const double lo = sideBound(q[i] - q_min_[i], qd[i], di, ds, off, rec, ctx.dt, xi_lower_[i]);
+    const double lo = velocityDamperBound(q[i] - q_min_[i], qd[i], di, ds, off, rec, ctx.dt, xi_lower_[i]);
     // upper limit: x = -q
-    const double hi = -sideBound(q_max_[i] - q[i], -qd[i], di, ds, off, rec, ctx.dt, xi_upper_[i]);
+    const double hi = -velocityDamperBound(q_max_[i] - q[i], -qd[i], di, ds, off, rec, ctx.dt, xi_upper_[i]);
     tightenBounds(chi_lb, chi_ub, VariableLayout::kQdd + i, lo, hi);
   }
   return 0;

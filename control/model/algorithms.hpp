@@ -43,6 +43,11 @@ void crba(const Model& model, Data& data);
 /// Uses data's body poses: call forwardKinematics(q, v) first.
 Vector7 rnea(const Model& model, Data& data, const Vector7& a);
 
+/// d g / d q (N m / rad), column i = the change of the gravity torques Data::g
+/// per radian of joint i, payload included; analytic (each joint's turn moves
+/// the mass beyond it). Needs forwardKinematics at q. Real-time safe.
+void gravityJacobian(const Model& model, const Data& data, Matrix7& dg_dq);
+
 /// Attaches / removes the held object's mass to body 7 (affects M, h, g from the next computeAll).
 /// Real-time safe for a valid payload; throws handover::InputError for a negative or
 /// non-finite mass, com or inertia. A new payload replaces the previous one.

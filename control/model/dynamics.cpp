@@ -1,6 +1,8 @@
 // Joint-space dynamics in world axes, reusing forwardKinematics' poses:
 // CRBA with composite bodies (mass, com, inertia about the com) and a
 // Newton-Euler pass (RNEA). Both allocation-free.
+#include <array>
+
 #include "control/model/algorithms.hpp"
 #include "control/model/rigid_inertia.hpp"
 
@@ -76,6 +78,34 @@ void crba(const Model& model, Data& data) {
 
 Vector7 rnea(const Model& model, Data& data, const Vector7& a) {
   return newtonEuler(model, data, data.v, a, true);
+}
+
+void gravityJacobian(const Model& model, const Data& data, Matrix7& dg_dq) {
+  // g_j = a_j . (r_j x gamma), r_j = sum_{k>=j} m_k (c_k - p_j), gamma = -gravity:
+  // the moment about joint j's axis of the weight of everything beyond it.
+  const Vector3 gamma = -model.gravity;
+  std::array<Vector3, kNumBodies> r;  // r_j, world axes, kg m
+  double mass = 0.0;
+  Vector3 first_moment = Vector3::Zero();  // sum m_k c_k beyond and at j
+  for (int j = kNumBodies - 1; j >= 1; --j) {
+    const double m = (j == kArmDofs) ? data.body7_with_payload.mass : model.inertias[j].mass;
+    mass += m;
+    first_moment += m * data.com_world[j];
+    r[j] = first_moment - mass * data.oMb[j].translation();
+  }
+  for (int j = 1; j < kNumBodies; ++j) {
+    const Vector3& a_j = data.axis_world[j];
+    for (int i = 1; i < kNumBodies; ++i) {
+      const Vector3& a_i = data.axis_world[i];
+      if (i > j) {
+        // joint i turns only the mass beyond it: r_j changes by a_i x r_i
+        dg_dq(j - 1, i - 1) = a_j.dot(a_i.cross(r[i]).cross(gamma));
+      } else {
+        // joint i (at or before j) turns axis j and its lever together
+        dg_dq(j - 1, i - 1) = a_i.cross(a_j).dot(r[j].cross(gamma)) + a_j.dot(a_i.cross(r[j]).cross(gamma));
+      }
+    }
+  }
 }
 
 void computeAll(const Model& model, Data& data, const Vector7& q, const Vector7& v) {
