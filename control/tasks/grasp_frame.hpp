@@ -33,6 +33,13 @@ struct GraspOffset {
   /// object would turn with it). Points keep their place: the lever arm is
   /// computed from the unturned frame.
   bool parallel_gripper = false;
+  /// The configuration the grasp planner found for this grasp (rad), when it
+  /// found one. A large turn to the grasp orientation then goes the way the
+  /// joints move toward it, which may be the long way round: the shortest
+  /// rotation can wind the wrist into its limit where the plan turns it the
+  /// other way (TrajectoryTrackingTask).
+  bool has_joint_plan = false;
+  Vector7 joint_plan = Vector7::Zero();
 };
 
 struct GraspFrameState {

@@ -68,6 +68,11 @@ void TrajectoryTrackingTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen
   // full orientation rows unless the rotation about a free axis is left free
   if (!offset_.has_free_axis || offset_.approach_from_base) {
     error_.tail<3>() = orientationError(R_ee, g.pose.linear());
+    if (offset_.has_joint_plan) {
+      error_.tail<3>() = turnError(error_.tail<3>(), J_.bottomRows<3>() * (offset_.joint_plan - data.q), long_way_);
+    } else {
+      long_way_ = false;
+    }
     A.block<3, kArmDofs>(3, VariableLayout::kQdd) = J_.bottomRows<3>();
     A.block<3, 3>(3, VariableLayout::kObs + 3) = -Matrix3::Identity();
     b.tail<3>() = -orientation_.stiffness * speedLimited(error_.tail<3>(), orientation_, max_angular_speed_) -
@@ -87,6 +92,21 @@ void TrajectoryTrackingTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen
   A.block<3, 3>(3, VariableLayout::kObs + 3) = P * skew(a);
   b.tail<3>() = P * (-orientation_.stiffness * speedLimited(c, orientation_, max_angular_speed_) - orientation_.damping * cdot + Sb * drift.tail<3>() -
                      w_ee.cross(w_ee.cross(bv)) + w_obs.cross(w_obs.cross(a)));
+}
+
+Vector3 turnError(const Vector3& e, const Vector3& plan_turn, bool& long_way) {
+  const double theta = e.norm();
+  const double plan = plan_turn.norm();
+  if (theta < 0.5 * M_PI || plan < 1e-9) {
+    long_way = false;
+    return e;
+  }
+  // the PD turns by -e: the plan agrees when plan_turn . e < 0
+  const double along = plan_turn.dot(e) / (theta * plan);  // cosine
+  constexpr double kClear = 0.2;
+  if (along > kClear) long_way = true;
+  else if (along < -kClear) long_way = false;
+  return long_way ? Vector3(e - (2.0 * M_PI / theta) * e) : e;
 }
 
 }  // namespace handover::control

@@ -66,11 +66,12 @@ inline void setPhaseGainsForSpeed(const HandoverParams& p, ControllerHandle& ctr
 inline void setStandoff(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double standoff,
                         const Vector3& shift = Vector3::Zero()) {
   const TrackedChoice& c = trackedChoice(ctx, hand);
-  ctrl.setTrackingOffset(
-      TrackingOffset{Eigen::Translation3d(shift) * c.offset * Eigen::Translation3d(0.0, 0.0, -standoff), c.planned});
+  const Vector7& q_plan = standoff > 0.0 ? c.q_pre : c.q_target;
+  ctrl.setTrackingOffset(TrackingOffset{
+      Eigen::Translation3d(shift) * c.offset * Eigen::Translation3d(0.0, 0.0, -standoff), c.planned, c.planned, q_plan});
   ctx.tracking_standoff = standoff;
   ctx.tracking_shift = shift;
-  if (c.planned) ctrl.setPostureTarget(standoff > 0.0 ? c.q_pre : c.q_target);
+  if (c.planned) ctrl.setPostureTarget(q_plan);
 }
 
 inline void trackTarget(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double standoff = 0.0,

@@ -3,10 +3,15 @@
 namespace handover::runtime {
 
 control::GraspOffset makeTrackingOffset(const control::Isometry& placement, const control::GraspOffset& object_grasp,
-                                    bool follows_object, bool planned) {
+                                    bool follows_object, bool planned, bool has_joint_plan,
+                                    const control::Vector7& joint_plan) {
   control::GraspOffset g;
   g.placement = placement;
-  if (planned) return g;
+  if (planned) {
+    g.has_joint_plan = has_joint_plan;
+    g.joint_plan = joint_plan;
+    return g;
+  }
   g.has_free_axis = follows_object && object_grasp.has_free_axis;
   g.free_axis = object_grasp.free_axis;
   // a symmetric object is taken from the robot's side (the base is the world origin)

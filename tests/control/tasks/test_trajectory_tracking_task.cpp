@@ -5,9 +5,11 @@
 // for any qddot and any alphadot_obs (the coupling).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
+#include "control/controller.hpp"
 #include "control/model/algorithms.hpp"
 #include "control/so3.hpp"
 #include "control/tasks/observed_object_integrator.hpp"
@@ -315,4 +317,99 @@ TEST(GraspFrame, StateFollowsRigidBodyRelations) {
   EXPECT_LT((s.velocity.head<3>() - v_fd).norm(), 1e-5);
   EXPECT_LT((s.acceleration.head<3>() - a_fd).norm(), 1e-4 * (1.0 + a_fd.norm()));
   EXPECT_LT((s.acceleration.tail<3>() - m.alphadot.tail<3>()).norm(), 1e-15);
+}
+
+// The way of a large turn (turnError): short unless the plan turns the
+// other way; never long below a quarter turn; the choice holds until the
+// plan clearly turns the short way.
+TEST(TurnError, GoesTheLongWayOnlyWhenThePlanTurnsThatWay) {
+  const Vector3 e(0.0, 0.0, 2.4);  // the PD turns by -e: -2.4 rad about z
+  bool long_way = false;
+  // the plan turns about -z too: the short way
+  EXPECT_EQ(turnError(e, Vector3(0.0, 0.0, -3.0), long_way), e);
+  EXPECT_FALSE(long_way);
+  // the plan turns about +z: 2 pi - 2.4 about +z, i.e. an error of -(2 pi - 2.4) about z
+  const Vector3 l = turnError(e, Vector3(0.0, 0.0, 3.9), long_way);
+  EXPECT_TRUE(long_way);
+  EXPECT_NEAR(l.z(), -(2.0 * M_PI - 2.4), 1e-12);
+  EXPECT_NEAR(l.head<2>().norm(), 0.0, 1e-12);
+  // a plan about a perpendicular axis keeps the last choice
+  EXPECT_EQ(turnError(e, Vector3(1.0, 0.0, 0.0), long_way), l);
+  EXPECT_EQ(turnError(e, Vector3(0.0, 0.0, -1.0), long_way), e);
+  EXPECT_FALSE(long_way);
+  // below a quarter turn the short way always
+  EXPECT_EQ(turnError(Vector3(0.0, 0.0, 1.2), Vector3(0.0, 0.0, 3.0), long_way), Vector3(0.0, 0.0, 1.2));
+  EXPECT_FALSE(long_way);
+}
+
+namespace {
+
+// A controller tracking a resting grasp frame at the TCP pose of `q_plan`
+// from `q0`, the posture task pulling toward q_plan as the grasp planner's
+// redundancy resolution does, for 6 s.
+struct Turn {
+  double orientation_left = 0.0;  ///< rad
+  double position_left = 0.0;     ///< m
+  double joints_off_plan = 0.0;   ///< |q - q_plan|, rad
+  double wrist_margin = 10.0;     ///< least distance of q7 to its limits, rad
+};
+Turn turnToward(const Vector7& q0, const Vector7& q_plan, bool with_plan) {
+  ControllerConfig cfg;
+  cfg.tracking.translation.gains = PdGains::critical(20.0);
+  cfg.tracking.orientation.gains = PdGains::critical(20.0);
+  cfg.tracking.max_speed = 0.5;
+  cfg.tracking.max_angular_speed = 1.5;
+  Controller ctl(panda(), cfg);
+  ControlInputs in;
+  in.q = q0;
+  ctl.reset(in);
+  Data d(panda());
+  forwardKinematics(panda(), d, q_plan, Vector7::Zero());
+  const Isometry target = framePlacement(panda(), d, panda().frameId("tcp"));
+  GraspOffset offset;
+  offset.has_joint_plan = with_plan;
+  offset.joint_plan = q_plan;
+  ctl.setGraspOffset(offset);
+  ctl.setPostureTarget(q_plan);
+  ctl.resetObservedObject(target);
+  Vector7 q = q0, v = Vector7::Zero();
+  Turn r;
+  for (int k = 0; k < 6000; ++k) {
+    in.time = k * cfg.period;
+    in.q = q;
+    in.qd = v;
+    ctl.setObservationTarget(target, true);
+    ctl.step(in);
+    v += ctl.lastQdd() * cfg.period;
+    q += v * cfg.period;
+    r.wrist_margin = std::min({r.wrist_margin, q[6] - panda().q_min[6], panda().q_max[6] - q[6]});
+  }
+  r.orientation_left = orientationError(ctl.tcpPose().linear(), target.linear()).norm();
+  r.position_left = (ctl.tcpPose().translation() - target.translation()).norm();
+  r.joints_off_plan = (q - q_plan).norm();
+  return r;
+}
+
+}  // namespace
+
+// The wrist at 2.2 rad, the grasp a turn of 3.9 rad the other way about the
+// tool axis (q7 -> -1.7): the shortest rotation, 2.4 rad the other way,
+// would take q7 to 4.6, past its limit (2.9). With the plan the TCP turns
+// the way the joints go and arrives at the planned configuration; without
+// it the wrist winds into its limit, the other joints make up the turn and
+// the arm ends contorted, 0.18 m short of the frame (measured).
+TEST(TrajectoryTrackingTask, ALargeTurnGoesTheWayTheJointPlanTurns) {
+  Vector7 q0;
+  q0 << 0.0, -0.3, 0.0, -2.2, 0.0, 2.0, 2.2;
+  Vector7 q_plan = q0;
+  q_plan[6] = 2.2 - 3.9;
+  const Turn with = turnToward(q0, q_plan, true), without = turnToward(q0, q_plan, false);
+  EXPECT_LT(with.orientation_left, 0.01);
+  EXPECT_LT(with.position_left, 0.005);
+  EXPECT_LT(with.joints_off_plan, 0.05);
+  EXPECT_GT(with.wrist_margin, 0.3);
+  // without: the wrist winds into its limit and the arm contorts, short of the frame
+  EXPECT_LT(without.wrist_margin, 0.1);
+  EXPECT_GT(without.position_left, 0.05);
+  EXPECT_GT(without.joints_off_plan, 1.0);
 }
