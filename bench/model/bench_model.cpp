@@ -3,6 +3,7 @@
 
 #include <random>
 #include <string>
+#include <vector>
 
 #include "control/model/algorithms.hpp"
 #include "control/model/model.hpp"
@@ -50,6 +51,23 @@ void BM_ModelUpdate(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ModelUpdate);
+
+// the gravity Jacobian the gravity-hold constraint computes in a cycle
+// where a joint is near its share of the torque limit
+void BM_GravityJacobian(benchmark::State& state) {
+  const Model& model = pandaModel();
+  const States s(model);
+  std::vector<Data> data(States::kN, Data(model));  // each state's kinematics, computed once
+  for (int k = 0; k < States::kN; ++k) computeAll(model, data[k], s.q[k], s.v[k]);
+  Matrix7 G;
+  int k = 0;
+  for (auto _ : state) {
+    gravityJacobian(model, data[k], G);
+    benchmark::DoNotOptimize(G.data());
+    k = (k + 1) % States::kN;
+  }
+}
+BENCHMARK(BM_GravityJacobian);
 
 void BM_ForwardKinematics(benchmark::State& state) {
   const Model& model = pandaModel();
