@@ -9,6 +9,7 @@
 
 #include "control/constraints/gravity_hold_limit.hpp"
 #include "control/controller.hpp"
+#include "tests/control/constraints/pose_pull.hpp"
 
 using namespace handover::control;
 
@@ -28,15 +29,11 @@ Reach reachOut(bool with_constraint, double scale) {
   cfg.pose_task.translation.gains = PdGains::critical(40.0);
   cfg.pose_task.orientation.gains = PdGains::critical(40.0);
   Controller ctl(model, cfg);
-  ControlInputs in;
-  in.q = cfg.posture.target;
-  ctl.reset(in);
-  ctl.setTaskEnabled("tracking", false);
-  ctl.setTaskEnabled("pose", true);
   EXPECT_TRUE(ctl.setConstraintEnabled("gravity_hold", with_constraint));
-  Isometry target = ctl.tcpPose();
-  target.translation() += Vector3(0.45, 0.0, -0.2);
-  ctl.setPoseTarget(target);
+  ControlInputs in = handover::test::startPosePull(ctl, cfg, [](Isometry target) {
+    target.translation() += Vector3(0.45, 0.0, -0.2);
+    return target;
+  });
 
   Reach r;
   const double dt = cfg.period;

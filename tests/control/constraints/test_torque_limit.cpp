@@ -5,6 +5,7 @@
 
 #include "control/controller.hpp"
 #include "control/so3.hpp"
+#include "tests/control/constraints/pose_pull.hpp"
 
 using namespace handover::control;
 
@@ -17,19 +18,15 @@ TEST(JointTorqueLimit, SolvedAccelerationsRespectTorqueLimits) {
   cfg.pose_task.translation.gains = PdGains::critical(150.0);
   cfg.pose_task.orientation.gains = PdGains::critical(150.0);
   Controller ctl(model, cfg);
-  ControlInputs in;
-  in.q = cfg.posture.target;
-  ctl.reset(in);
+  ControlInputs in = handover::test::startPosePull(ctl, cfg, [](Isometry target) {
+    target.translation() += Vector3(0.25, 0.3, -0.2);
+    target.linear() = expRotation(Vector3(0.0, 0.0, 1.2)) * target.linear();
+    return target;
+  });
   Payload payload;
   payload.mass = 1.5;
   payload.com = Vector3(0.0, 0.0, 0.05);
   ctl.setPayload(payload);
-  ctl.setTaskEnabled("tracking", false);
-  ctl.setTaskEnabled("pose", true);
-  Isometry target = ctl.tcpPose();
-  target.translation() += Vector3(0.25, 0.3, -0.2);
-  target.linear() = expRotation(Vector3(0.0, 0.0, 1.2)) * target.linear();
-  ctl.setPoseTarget(target);
 
   const Vector7 limit = 0.5 * model.tau_max;
   const double dt = cfg.period;
