@@ -133,12 +133,21 @@ void HandoverCycle::start(const io::ArmState& arm, bool holds_object) {
   contact_.start(object, holds_object);
   reach_.reset();
   controller_.setPayload(contact_.payload());
+  robot_held_ = adapter_.payloadSet();
 }
 
 const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, perception::PoseSource& source) {
   // 1. perceive (who holds the object, and the TCP, as of the last cycle)
   estimator_.update(t, source);
   const bool robot_holds = adapter_.payloadSet();
+  if (robot_held_ && !robot_holds && estimate_->human.valid) {
+    // the robot let go: the object stays where the fingers left it in the person's
+    // hand (not where a nominal grip would put it), for the collision rows after
+    // the release, until a tracker measures the object itself
+    estimator_.setHandObjectOffset(estimate_->human.hand.inverse() * controller_.tcpPose() *
+                                   machine_->context().objectInTcp());
+  }
+  robot_held_ = robot_holds;
   const perception::PerceptionEstimate& est =
       estimator_.estimate(t, robot_holds ? perception::ObjectHolder::Robot : perception::ObjectHolder::Person,
                           controller_.tcpPose(), machine_->context().objectInTcp());  // the grasp closed on

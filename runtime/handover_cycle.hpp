@@ -218,6 +218,7 @@ class HandoverCycle {
   perception::PerceptionEstimator estimator_;
   perception::ObservationTarget obs_target_;
   perception::ReachPredictor reach_;  ///< fed in plan(): where the person's hand will rest
+  bool robot_held_ = false;           ///< the robot held the object last step (payload set)
   bool predict_reach_ = false;        ///< the state machine anticipates reaches (params.tracking.anticipate_reach)
   /// This cycle's estimate with the hand and the object where the reach will
   /// end (as far as reach_ trusts it); read instead of the estimate while

@@ -99,5 +99,20 @@ TEST(CollisionEndToEnd, FingersClosingOnABallOnAPalmDoNotPressThePalm) {
   EXPECT_EQ(s.outcome, "success") << app::formatSummary(s);
 }
 
+// A ball put into a receiver's hand who pulls late (r2h_ball_late_pull, from the
+// benchmark): after the release the object in the person's hand is a collision
+// body for the gripper, and it sits where the fingers left it (HandoverCycle:
+// the estimator's hand-to-object offset taken at the release); with the nominal
+// grip it sat at the palm, 6 cm off, and the opened fingers backing out and
+// swinging away struck the real ball (198 N, 2 velocity-limit steps).
+TEST(CollisionEndToEnd, FingersLeavingABallInTheReceiversHandKeepOffIt) {
+  testing::ScratchDir dir("collision_ball_late_pull");
+  const app::RunSummary s = runFile(dir, "tests/app/run/data/r2h_ball_late_pull.yaml");
+  EXPECT_EQ(s.limit_violations.position + s.limit_violations.velocity + s.limit_violations.torque, 0)
+      << app::formatSummary(s);
+  EXPECT_EQ(s.human_contacts, 0) << app::formatSummary(s);
+  EXPECT_EQ(s.outcome, "success") << app::formatSummary(s);
+}
+
 }  // namespace
 }  // namespace handover
