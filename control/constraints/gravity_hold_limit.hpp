@@ -44,8 +44,6 @@ class GravityHoldLimit : public Constraint {
               Eigen::Ref<Eigen::VectorXd> ub, Eigen::Ref<Eigen::VectorXd> chi_lb,
               Eigen::Ref<Eigen::VectorXd> chi_ub) override;
   void reset() { xi_.fill(0.0); }
-  /// True while joint j's damper is on.
-  bool active(int j) const { return xi_[j] > 0.0; }
 
  private:
   std::string name_;

@@ -30,9 +30,8 @@ using Vector7 = Eigen::Matrix<double, 7, 1>;
 struct TrackingOffset {
   Isometry target_in_observed = Isometry::Identity();
   bool planned = false;
-  /// With `planned`: the configuration planned for that frame (rad), the way
-  /// a large turn goes (control::GraspOffset::joint_plan).
-  bool has_joint_plan = false;
+  /// With `planned`: the configuration the planner found for that frame (rad),
+  /// the way a large turn goes (control::GraspOffset::joint_plan).
   Vector7 joint_plan = Vector7::Zero();
 };
 

@@ -99,7 +99,7 @@ static_assert(rowsInChannelOrder(), "row i is channel i");
 bool operator==(const PoseCommand& a, const PoseCommand& b) { return a.active == b.active && same(a.pose, b.pose); }
 bool operator==(const TrackingOffset& a, const TrackingOffset& b) {
   return a.planned == b.planned && same(a.target_in_observed, b.target_in_observed) &&
-         a.has_joint_plan == b.has_joint_plan && (!a.has_joint_plan || a.joint_plan == b.joint_plan);
+         (!a.planned || a.joint_plan == b.joint_plan);
 }
 bool operator==(const PostureCommand& a, const PostureCommand& b) { return a.active == b.active && a.q == b.q; }
 bool operator==(const GainsCommand& a, const GainsCommand& b) {

@@ -68,7 +68,7 @@ inline void setStandoff(HandoverContext& ctx, ControllerHandle& ctrl, bool hand,
   const TrackedChoice& c = trackedChoice(ctx, hand);
   const Vector7& q_plan = standoff > 0.0 ? c.q_pre : c.q_target;
   ctrl.setTrackingOffset(TrackingOffset{
-      Eigen::Translation3d(shift) * c.offset * Eigen::Translation3d(0.0, 0.0, -standoff), c.planned, c.planned, q_plan});
+      Eigen::Translation3d(shift) * c.offset * Eigen::Translation3d(0.0, 0.0, -standoff), c.planned, q_plan});
   ctx.tracking_standoff = standoff;
   ctx.tracking_shift = shift;
   if (c.planned) ctrl.setPostureTarget(q_plan);

@@ -58,8 +58,7 @@ void ControllerAdapter::setTaskOffset(int task, const fsm::TrackingOffset& offse
 void ControllerAdapter::applyOffset() {
   controller_.setTaskOffset(offset_task_, makeTrackingOffset(placement_.target_in_observed, object_grasp_,
                                                              target_kind_ == fsm::ObservationTarget::kObject,
-                                                             placement_.planned, placement_.has_joint_plan,
-                                                             placement_.joint_plan));
+                                                             placement_.planned, placement_.joint_plan));
 }
 
 void ControllerAdapter::setSpeedScale(double scale) {

@@ -3,12 +3,11 @@
 namespace handover::runtime {
 
 control::GraspOffset makeTrackingOffset(const control::Isometry& placement, const control::GraspOffset& object_grasp,
-                                    bool follows_object, bool planned, bool has_joint_plan,
-                                    const control::Vector7& joint_plan) {
+                                    bool follows_object, bool planned, const control::Vector7& joint_plan) {
   control::GraspOffset g;
   g.placement = placement;
   if (planned) {
-    g.has_joint_plan = has_joint_plan;
+    g.has_joint_plan = true;
     g.joint_plan = joint_plan;
     return g;
   }

@@ -18,10 +18,10 @@ namespace handover::runtime {
 /// hand's frame does none of these. `planned`: the placement is a choice the
 /// grasp planner already made with the robot's kinematics (turn about the
 /// free axis, twin): it is tracked exactly, none of these rules applies;
-/// `joint_plan` (with `has_joint_plan`) is then the configuration planned for
-/// it, which decides the way of a large turn (GraspOffset::joint_plan).
+/// `joint_plan` is then the configuration planned for it, which decides the
+/// way of a large turn (GraspOffset::joint_plan).
 control::GraspOffset makeTrackingOffset(const control::Isometry& placement, const control::GraspOffset& object_grasp,
-                                    bool follows_object, bool planned = false, bool has_joint_plan = false,
+                                    bool follows_object, bool planned = false,
                                     const control::Vector7& joint_plan = control::Vector7::Zero());
 
 }  // namespace handover::runtime

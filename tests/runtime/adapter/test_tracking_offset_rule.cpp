@@ -44,5 +44,18 @@ TEST(TrackingOffsetRule, AnObjectWithoutSymmetryGetsNone) {
   EXPECT_TRUE(g.parallel_gripper);
 }
 
+TEST(TrackingOffsetRule, APlannedOffsetIsTrackedExactlyWithItsJointPlan) {
+  control::Vector7 q_plan;
+  q_plan << 0.1, -0.4, 0.2, -2.0, 0.3, 1.9, -1.7;
+  const control::GraspOffset g = makeTrackingOffset(symmetricBottle().placement, symmetricBottle(), true, true, q_plan);
+  EXPECT_FALSE(g.has_free_axis);
+  EXPECT_FALSE(g.approach_from_base);
+  EXPECT_FALSE(g.parallel_gripper);
+  EXPECT_TRUE(g.has_joint_plan);
+  EXPECT_TRUE(g.joint_plan == q_plan);
+  // an unplanned offset carries none: the turn is the shortest
+  EXPECT_FALSE(makeTrackingOffset(symmetricBottle().placement, symmetricBottle(), true).has_joint_plan);
+}
+
 }  // namespace
 }  // namespace handover::runtime
