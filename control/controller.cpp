@@ -121,6 +121,9 @@ bool Controller::setTaskOffset(int index, const GraspOffset& offset) {
   } else {
     o.free_axis /= n;
   }
+  if (!std::isfinite(o.approach_speed) || !std::isfinite(o.approach_acceleration)) {
+    o.approach_speed = o.approach_acceleration = 0.0;  // a feed-forward is never worth a NaN
+  }
   return tasks_[index]->applyOffset(o);
 }
 

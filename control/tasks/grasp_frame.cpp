@@ -62,6 +62,14 @@ GraspFrameState graspFrameState(const ObservedState& obs, const Vector6& alphado
   s.velocity.tail<3>() = w;
   s.acceleration.head<3>() = alphadot_obs.head<3>() + wdot.cross(r) + w.cross(w.cross(r));
   s.acceleration.tail<3>() = wdot;
+  // the placement slides along the grasp's approach axis (the standoff changing): in the
+  // object's turning frame, d/dt (R z s) = w x (R z s) + R z sdot
+  if (offset.approach_speed != 0.0 || offset.approach_acceleration != 0.0) {
+    const Vector3 z = s.pose.linear().col(2);
+    const Vector3 slide = offset.approach_speed * z;
+    s.velocity.head<3>() += slide;
+    s.acceleration.head<3>() += offset.approach_acceleration * z + 2.0 * w.cross(slide);
+  }
   s.lever = r;
   return s;
 }

@@ -319,6 +319,35 @@ TEST(GraspFrame, StateFollowsRigidBodyRelations) {
   EXPECT_LT((s.acceleration.tail<3>() - m.alphadot.tail<3>()).norm(), 1e-15);
 }
 
+// A placement sliding along its own approach axis (a standoff shrinking
+// with speed sdot and acceleration sddot) on a moving, turning object: the
+// fed-forward velocity and acceleration are the derivatives of the point.
+TEST(GraspFrame, ASlidingPlacementFeedsItsMotionForward) {
+  std::mt19937 rng(11);
+  const Motion m = randomMotion(rng);
+  GraspOffset g = someOffset(false);
+  const double s0 = 0.06, sdot = 0.3, sddot = -2.0;  // m, m/s, m/s^2 along the grasp z
+  auto slid = [&](double t) {
+    GraspOffset o = g;
+    o.placement = g.placement * Eigen::Translation3d(0.0, 0.0, -s0 + sdot * t + 0.5 * sddot * t * t);
+    return o;
+  };
+  auto point = [&](double t) {
+    return Vector3(graspFrameState(m.object(t), m.alphadot, slid(t), Matrix3::Identity()).pose.translation());
+  };
+  GraspOffset now = slid(0.0);
+  now.approach_speed = sdot;
+  now.approach_acceleration = sddot;
+  const GraspFrameState s = graspFrameState(m.object(0.0), m.alphadot, now, Matrix3::Identity());
+  const Vector3 v_fd = firstDerivative(point);
+  const Vector3 a_fd = secondDerivative(point);
+  EXPECT_LT((s.velocity.head<3>() - v_fd).norm(), 1e-5);
+  EXPECT_LT((s.acceleration.head<3>() - a_fd).norm(), 1e-4 * (1.0 + a_fd.norm()));
+  // without the feed-forward the frame's velocity misses the slide
+  const GraspFrameState still = graspFrameState(m.object(0.0), m.alphadot, slid(0.0), Matrix3::Identity());
+  EXPECT_NEAR((s.velocity.head<3>() - still.velocity.head<3>()).norm(), sdot, 1e-12);
+}
+
 // The way of a large turn (turnError): short unless the plan turns the
 // other way; never long below a quarter turn; the choice holds until the
 // plan clearly turns the short way.
