@@ -33,6 +33,10 @@ struct TrackingOffset {
   /// With `planned`: the configuration the planner found for that frame (rad),
   /// the way a large turn goes (control::GraspOffset::joint_plan).
   Vector7 joint_plan = Vector7::Zero();
+  /// The frame sliding along its own z (a standoff shrinking: positive), m/s
+  /// and m/s^2: fed forward to the tracking (control::GraspOffset::approach_speed).
+  double approach_speed = 0.0;
+  double approach_acceleration = 0.0;
 };
 
 /// A task's reference for setTaskTarget: the one it was configured with, a

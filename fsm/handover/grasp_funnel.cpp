@@ -37,10 +37,39 @@ double funnelStandoff(const FingerFit& f, double max_standoff, double margin) {
   return max_standoff * (1.0 - enclosed);
 }
 
-double GraspFunnel::step(double standoff, double goal, double time) {
-  const double reach = speed * std::max(0.0, time - last_time);
+GraspFunnel::Slide GraspFunnel::step(double standoff, double rate, double goal, double time) {
+  const double dt = std::max(0.0, time - last_time);
   last_time = time;
-  return standoff + std::clamp(goal - standoff, -reach, reach);
+  Slide s;
+  const double gap = goal - standoff;
+  if (acceleration <= 0.0) {  // first order: at `speed` straight to the goal
+    const double reach = speed * dt;
+    s.standoff = standoff + std::clamp(gap, -reach, reach);
+    s.rate = dt > 0.0 ? (s.standoff - standoff) / dt : 0.0;
+    return s;
+  }
+  if (dt <= 0.0) {
+    s.standoff = standoff;
+    s.rate = rate;
+    return s;
+  }
+  // the fastest rate after which the rest of the way can still be braked at `acceleration`
+  // (v^2 <= 2 a (|gap| - v dt): the discrete braking curve, which does not pass the goal;
+  // a goal that moved nearer than the braking distance is passed and come back to), capped
+  // at `speed`
+  const double a_dt = acceleration * dt;
+  if (std::abs(gap) < 1e-9 && std::abs(rate) <= a_dt) {
+    // there, at rest. No acceleration: the caller sends nothing more once the slide
+    // rests, so an acceleration reported now would be fed forward for good
+    s.standoff = goal;
+    return s;
+  }
+  const double brake = -a_dt + std::sqrt(a_dt * a_dt + 2.0 * acceleration * std::abs(gap));
+  const double wanted = std::copysign(std::min(speed, brake), gap);
+  s.rate = std::clamp(wanted, rate - a_dt, rate + a_dt);
+  s.standoff = standoff + s.rate * dt;
+  s.acceleration = (s.rate - rate) / dt;
+  return s;
 }
 
 }  // namespace handover::fsm

@@ -47,21 +47,34 @@ FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry&
 double funnelStandoff(const FingerFit& f, double max_standoff, double margin);
 
 /// The funnel over time: the standoff moves toward funnelStandoff at no more
-/// than `speed` (the fit is as noisy as the object's pose). Configured by the
-/// states that slide the fingers in (Approach, Grasp). RT safe.
+/// than `speed` (the fit is as noisy as the object's pose) and, with an
+/// `acceleration` limit, as a smooth slide: its rate changes by at most
+/// `acceleration` and brakes in time to stop at the goal (the time-optimal
+/// profile under both limits). The slide's rate and acceleration are what
+/// the tracking feeds forward (TrackingOffset::approach_speed), so the TCP
+/// slides with the target instead of lagging it. Configured by the states
+/// that slide the fingers in (Approach, Grasp). RT safe.
 struct GraspFunnel {
   double max_standoff = 0.0;  ///< m, the funnel's mouth (0: no funnel)
   double speed = 0.1;         ///< m/s, fastest change of the standoff
+  double acceleration = 0.0;  ///< m/s^2, fastest change of its rate (0: none, the rate jumps)
   double margin = 0.5;        ///< share of the clearance the last slide keeps to spare
   double last_time = 0.0;     ///< s, the last step
+
+  /// One step of the slide.
+  struct Slide {
+    double standoff = 0.0;      ///< m
+    double rate = 0.0;          ///< m/s, d standoff / dt (negative: sliding in)
+    double acceleration = 0.0;  ///< m/s^2, d rate / dt
+  };
 
   bool enabled() const { return max_standoff > 0.0; }
   /// Restarts the rate limit at `time` (s).
   void restart(double time) { last_time = time; }
-  /// The standoff (m) for this cycle from the one tracked now (`standoff`),
-  /// toward `goal` (m; funnelStandoff of the fit, or max_standoff where the
-  /// caller keeps the funnel closed).
-  double step(double standoff, double goal, double time);
+  /// The slide for this cycle from the standoff tracked now (`standoff`, m)
+  /// moving at `rate` (m/s), toward `goal` (m; funnelStandoff of the fit, or
+  /// max_standoff where the caller keeps the funnel closed).
+  Slide step(double standoff, double rate, double goal, double time);
 };
 
 }  // namespace handover::fsm

@@ -14,6 +14,7 @@ namespace {
 void readFunnel(const YamlReader& def, double standoff, GraspFunnel& funnel) {
   funnel.max_standoff = standoff;
   funnel.speed = HandoverState::readPositive(def, "standoff_speed", 1.0);
+  if (def.has("standoff_acceleration")) funnel.acceleration = HandoverState::readPositive(def, "standoff_acceleration", 20.0);
   funnel.margin = HandoverState::readRange(def, "funnel_margin", 0.0, 1.0);
 }
 
@@ -115,13 +116,12 @@ void Approach::slideIn(HandoverContext& ctx, bool arrived) {
     f.fit -= std::abs((grasp.translation() - ctx.in.tcp_pose.translation()).dot(grasp.linear().col(0)));
     goal = funnelStandoff(f, funnel_.max_standoff, funnel_.margin);
   }
-  const double now = ctx.tracking_standoff;
-  const double standoff = funnel_.step(now, goal, ctx.time);
-  if (standoff == now) return;
-  setStandoff(ctx, ctrl(), false, standoff, ctx.tracking_shift);
+  const GraspFunnel::Slide slide = funnel_.step(ctx.tracking_standoff, ctx.tracking_standoff_rate, goal, ctx.time);
+  if (slide.standoff == ctx.tracking_standoff && slide.rate == ctx.tracking_standoff_rate) return;
+  setStandoff(ctx, ctrl(), false, slide.standoff, ctx.tracking_shift, slide.rate, slide.acceleration);
   // in the funnel the gripper and the hand share the object, as in Grasp: the rules that keep
   // the fingers off the object and apart from the hand would stop the slide short of it
-  ctrl().relaxHandClearance(standoff < funnel_.max_standoff);
+  ctrl().relaxHandClearance(slide.standoff < funnel_.max_standoff);
 }
 
 bool Approach::onRun(HandoverContext& ctx) {
@@ -191,8 +191,17 @@ void Grasp::onStart(HandoverContext& ctx) {
   touch_since_ = -1.0;
   touch_felt_ = false;
   touch_shift_.setZero();
-  trackTarget(ctx, ctrl(), false, std::min(ctx.tracking_standoff, funnelStandoff(fitNow(ctx), funnel_.max_standoff, funnel_.margin)),
-              TrackingGains::kAlign);
+  if (funnel_.acceleration > 0.0) {
+    // the slide goes on from where the approach left it, at its rate (fed forward): a
+    // jump of the target to the funnel's goal left the TCP to the PD's slow tail
+    const double rate = ctx.tracking_standoff_rate;
+    trackTarget(ctx, ctrl(), false, ctx.tracking_standoff, TrackingGains::kAlign);
+    if (rate != 0.0) setStandoff(ctx, ctrl(), false, ctx.tracking_standoff, touch_shift_, rate);
+  } else {
+    trackTarget(ctx, ctrl(), false,
+                std::min(ctx.tracking_standoff, funnelStandoff(fitNow(ctx), funnel_.max_standoff, funnel_.margin)),
+                TrackingGains::kAlign);
+  }
 }
 
 Isometry Grasp::correctedGraspFrame(const HandoverContext& ctx) const {
@@ -240,9 +249,10 @@ bool Grasp::onRun(HandoverContext& ctx) {
     FingerFit f = fitNow(ctx);
     if (touch_force_ > 0.0 && feelTouch(ctx, f)) f = fitNow(ctx);  // the corrected grasp's fit
     // the funnel's standoff, reached at standoff_speed (the fit is as noisy as the object's pose)
-    const double now = ctx.tracking_standoff;
-    const double standoff = funnel_.step(now, funnelStandoff(f, funnel_.max_standoff, funnel_.margin), ctx.time);
-    if (standoff != now) setStandoff(ctx, ctrl(), false, standoff, touch_shift_);
+    const GraspFunnel::Slide slide = funnel_.step(ctx.tracking_standoff, ctx.tracking_standoff_rate,
+                                                  funnelStandoff(f, funnel_.max_standoff, funnel_.margin), ctx.time);
+    if (slide.standoff != ctx.tracking_standoff || slide.rate != ctx.tracking_standoff_rate)
+      setStandoff(ctx, ctrl(), false, slide.standoff, touch_shift_, slide.rate, slide.acceleration);
     // closes only on an object between the fingers (the funnel's last part)
     if (f.fit <= 0.0 || positionError(ctx.in.tcp_pose, correctedGraspFrame(ctx)) > pos_tol_ ||
         !alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_))
@@ -250,10 +260,22 @@ bool Grasp::onRun(HandoverContext& ctx) {
     ctx.force_before_grasp = ctx.force;  // reference for the release test
     ctrl().setGripper(ctx.params->gripper_close_width, ctx.params->gripForce(ctx.object.mass, ctx.comInTcp()));
     closing_ = true;
+    pull_.restart();
     closed_at_ = last_time_ = ctx.time;
     last_width_ = ctx.in.finger_width;
     finger_speed_ = 1e9;
     return false;
+  }
+  // the person takes it back as the fingers close (WaitForRelease's rule): let them
+  if (pull_.pulled(ctx, touch_time_)) {
+    setOutput(withdrawn_);
+    return true;
+  }
+  // closing while the slide still runs (the TCP within the tolerance of the grasp): it
+  // ends at the grasp, not frozen mid-way with its rate still fed forward
+  if (ctx.tracking_standoff != 0.0 || ctx.tracking_standoff_rate != 0.0) {
+    const GraspFunnel::Slide slide = funnel_.step(ctx.tracking_standoff, ctx.tracking_standoff_rate, 0.0, ctx.time);
+    setStandoff(ctx, ctrl(), false, slide.standoff, touch_shift_, slide.rate, slide.acceleration);
   }
   // finger speed over >= 10 ms windows: robust to quantised width readings
   if (ctx.time - last_time_ >= 0.01) {
@@ -266,7 +288,7 @@ bool Grasp::onRun(HandoverContext& ctx) {
   return true;
 }
 
-WaitForRelease::WaitForRelease() : released_(declareOutput("Released")) {}
+WaitForRelease::WaitForRelease() : released_(declareOutput("Released")), withdrawn_(declareOutput("Withdrawn")) {}
 
 void WaitForRelease::configure(const YamlReader& def) {
   if (def.has("release_share")) {
@@ -289,6 +311,7 @@ void WaitForRelease::onStart(HandoverContext& ctx) {
   holding_ = false;
   hand_start_ = -1.0;
   carry_since_ = -1.0;
+  pull_.restart();
   // follow the object while the person still holds it, where the fingers closed on it
   // (the grasp as Grasp corrected it by touch: ctx.tracking_shift)
   trackTarget(ctx, ctrl(), false, 0.0, TrackingGains::kFollow, ctx.tracking_shift);
@@ -309,6 +332,16 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   const double weight = ctx.object.mass * ctx.params->gravity;
   const bool carries = share_ >= 0.0 ? ctx.in.load_share >= share_
                                      : ctx.addedWeight(ctx.force_before_grasp) >= fraction_ * weight;
+  // the person takes the object back: the fingers let them have it. Holding on, the arm
+  // was dragged after a person who withdrew as the fingers closed (retries, aborts: joints
+  // past their velocity limits). Felt and seen: a pull toward them, their hand going that
+  // way (the object's estimate sits in that hand until the robot holds it, so the hand
+  // alone cannot tell a person who let go and leaves). Not the load share: a pull down and
+  // away reads as the object's weight
+  if (pull_.pulled(ctx, hold_time_)) {
+    setOutput(withdrawn_);
+    return true;
+  }
   // the robot bears most of the weight: hold still, not following the
   // object's estimate, which moves with the person's (leaving) hand and with
   // the object as it sinks. Held only once the whole load had come over, the

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fsm/handover/grasp_funnel.hpp"
+#include "fsm/handover/perception_checks.hpp"
 #include "fsm/handover/handover_state.hpp"
 
 namespace handover::fsm {
@@ -53,7 +54,9 @@ class WaitForPerson : public HandoverState {
 /// current target.
 /// Keys: near_distance (m, TCP to target frame); standoff (m, the pre-grasp
 /// distance along the approach axis) with, for a take's funnel,
-/// standoff_speed (m/s) and funnel_margin (share of the clearance, 0..1);
+/// standoff_speed (m/s), standoff_acceleration (m/s^2, optional: a slide
+/// fed forward to the tracking, GraspFunnel) and funnel_margin (share of the
+/// clearance, 0..1);
 /// a give's lift (m, optional, default 0: none) with lift_speed (m/s): the
 /// presentation is approached from above the receiver's hand
 /// (presentation_descent.hpp).
@@ -81,12 +84,31 @@ class Approach : public HandoverState {
   GraspFunnel funnel_;              ///< a take's continuous approach; max_standoff 0: none
 };
 
+/// A person taking back the object the fingers close on or hold while they
+/// still carry it: pulledBack (perception_checks.hpp) with
+/// params.take_back_force, for a while. RT safe.
+struct TakeBack {
+  double since = -1.0;  ///< s, the pull began (< 0: none)
+  void restart() { since = -1.0; }
+  /// True once the pull has lasted `hold` s (never with take_back_force 0).
+  bool pulled(const HandoverContext& ctx, double hold) {
+    if (ctx.params->take_back_force <= 0.0 || !pulledBack(ctx, ctx.params->take_back_force)) {
+      since = -1.0;
+      return false;
+    }
+    if (since < 0.0) since = ctx.time;
+    return ctx.time - since >= hold;
+  }
+};
+
 /// [Grasped, Missed, Withdrawn] Keeps tracking the grasp frame; closes when
 /// position, orientation and relative speed errors are within tolerance
 /// (recording the force before the grasp). Once closing for at least
 /// confirm_time and the fingers have stopped (slower than stall_speed), the
 /// grasp is confirmed by a finger width above min_width (not closed on
-/// nothing), else missed.
+/// nothing), else missed. Withdrawn: before closing, the person withdrew
+/// (withdrawn()); while closing, they take the object back (TakeBack for
+/// touch_time).
 /// Slides in through the grasp funnel (grasp_funnel.hpp): backed off by up
 /// to `standoff` along the approach axis while the object does not fit
 /// between the open fingers, all the way in once it does; it closes only
@@ -101,7 +123,9 @@ class Approach : public HandoverState {
 /// per attempt.
 /// Keys: position_tolerance (m), orientation_tolerance_deg, speed_tolerance
 /// (m/s), confirm_time (s), stall_speed (m/s), min_width (m), standoff (m,
-/// optional, default 0: no funnel) with standoff_speed (m/s) and
+/// optional, default 0: no funnel) with standoff_speed (m/s),
+/// standoff_acceleration (m/s^2, optional: the slide goes on from the
+/// approach's, fed forward, and ends at the grasp also once closing) and
 /// funnel_margin (share of the clearance, 0..1); touch_force (N, optional,
 /// default 0: no correction) with touch_time (s) and max_touches.
 class Grasp : public HandoverState {
@@ -133,16 +157,19 @@ class Grasp : public HandoverState {
   double touch_since_ = -1.0;    ///< s, the push began; < 0: none
   bool touch_felt_ = false;      ///< this push was answered (waits for it to end)
   Vector3 touch_shift_ = Vector3::Zero();  ///< m, the grasp's correction, object frame
+  TakeBack pull_;                ///< while closing
 };
 
-/// [Released] Follows, then holds, the grasp pose until the person lets go, for
+/// [Released, Withdrawn] Follows, then holds, the grasp pose until the person lets go, for
 /// hold_time: the robot's load share (HandoverInput::load_share) reaches
 /// release_share and the person's hand has moved release_distance farther
 /// from the TCP than when the state started (a stale hand: the share alone;
 /// a hand that stays: the share alone once it held for release_wait),
 /// or, without release_share, the filtered world force has gained at least
 /// release_fraction * m g along gravity since the grasp. Then sets the
-/// payload (the robot holds the object).
+/// payload (the robot holds the object). Withdrawn: the person takes the
+/// object back (TakeBack for hold_time; whatever the load share says, which
+/// a pull down and away raises): the fingers let them have it.
 /// Why both: while the person's grip is rigid the load on the wrist is
 /// whatever the robot pushes (the load share follows the robot's own
 /// payload), so the load alone cannot tell that the person let go; the hand
@@ -170,7 +197,8 @@ class WaitForRelease : public HandoverState {
   bool onRun(HandoverContext& ctx) override;
 
  private:
-  int released_;
+  int released_, withdrawn_;
+  TakeBack pull_;
   double fraction_ = 0.7, hold_time_ = 0.1;
   double share_ = -1.0;  ///< release_share; < 0: the force rule
   double hold_share_ = 1.0;  ///< hold_share (<= release_share): the load share from which the TCP is held still

@@ -51,6 +51,9 @@ struct HandoverContext : Context {
   /// m: how far the tracked target is backed off along its approach axis, as
   /// trackTarget (tracking_setup.hpp) last commanded it.
   double tracking_standoff = 0.0;
+  /// m/s: how fast that standoff changes, as last commanded (a funnel's slide;
+  /// 0 for a standoff set once).
+  double tracking_standoff_rate = 0.0;
   /// m, observed frame: how far the tracked target is shifted from the
   /// chosen one (a give: raised over the receiver's hand, and beside it while
   /// the gripper rises: presentation_descent.hpp), as setStandoff last

@@ -111,6 +111,7 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
   p.max_data_age = positive(w, "max_data_age", 5.0);
   p.stale_timeout = positive(w, "stale_timeout", 10.0);
   p.withdraw_speed = positive(w, "speed", 5.0);
+  if (auto f = w.optionalChild("take_back_force")) p.take_back_force = f->checkRange(f->asDouble(), 0.0, 200.0);
   w.finish();
   const YamlReader poses = n.child("poses");
   p.stow_pose = readPose(poses.child("stow"));

@@ -84,6 +84,9 @@ struct HandoverParams {
   double max_data_age = 0.1;         ///< s, older samples are not used to start an approach
   double stale_timeout = 0.5;        ///< s without a sample during an approach = the person withdrew
   double withdraw_speed = 0.3;       ///< m/s away from workspace.center = the person withdrew
+  /// N: a pull beyond the object's weight toward where the person's hand came from, while
+  /// the fingers close on or hold the object they still carry = they take it back (0: never)
+  double take_back_force = 0.0;
   // poses (TCP in the world)
   Isometry stow_pose = Isometry::Identity();   ///< where a taken object is carried
   Isometry safe_pose = Isometry::Identity();   ///< where the robot retreats after an abort

@@ -22,6 +22,16 @@ bool withdrawn(const HandoverContext& ctx, const SensedBody& body) {
   return -speedToward(p.workspace.center, body) > p.withdraw_speed;
 }
 
+bool pulledBack(const HandoverContext& ctx, double force) {
+  if (!ctx.home_hand_known || !fresh(ctx.in.hand, ctx.params->max_data_age)) return false;
+  Vector3 d = ctx.home_hand - ctx.in.hand.pose.translation();
+  d.z() = 0.0;
+  const double n = d.norm();
+  if (n < 1e-9) return false;
+  d /= n;
+  return ctx.interaction.dot(d) > force && ctx.in.hand.velocity.head<3>().dot(d) > 0.0;
+}
+
 double positionError(const Isometry& a, const Isometry& b) {
   return (a.translation() - b.translation()).norm();
 }

@@ -12,6 +12,14 @@ bool fresh(const SensedBody& body, double max_age);
 /// The person withdrew `body`: stale for longer than stale_timeout, outside
 /// the workspace, or moving away from it faster than withdraw_speed.
 bool withdrawn(const HandoverContext& ctx, const SensedBody& body);
+/// The person pulls the object they share with the robot back where they
+/// brought it from: the wrist feels more than `force` (N) beyond the object's
+/// weight (HandoverContext::interaction) across the floor toward the place
+/// their hand rested before it reached (HandoverContext::home_hand), and
+/// their hand, seen now, moves that way. Across the floor: the object's
+/// weight is modelled only once the robot carries it (before, it reads as a
+/// lift), and a pull down and away reads as that weight.
+bool pulledBack(const HandoverContext& ctx, double force);
 /// Position error (m) and rotation angle error (rad) between two poses.
 double positionError(const Isometry& a, const Isometry& b);
 double rotationError(const Isometry& a, const Isometry& b);

@@ -99,7 +99,8 @@ static_assert(rowsInChannelOrder(), "row i is channel i");
 bool operator==(const PoseCommand& a, const PoseCommand& b) { return a.active == b.active && same(a.pose, b.pose); }
 bool operator==(const TrackingOffset& a, const TrackingOffset& b) {
   return a.planned == b.planned && same(a.target_in_observed, b.target_in_observed) &&
-         (!a.planned || a.joint_plan == b.joint_plan);
+         (!a.planned || a.joint_plan == b.joint_plan) && a.approach_speed == b.approach_speed &&
+         a.approach_acceleration == b.approach_acceleration;
 }
 bool operator==(const PostureCommand& a, const PostureCommand& b) { return a.active == b.active && a.q == b.q; }
 bool operator==(const GainsCommand& a, const GainsCommand& b) {

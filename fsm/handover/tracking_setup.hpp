@@ -62,14 +62,16 @@ inline void setPhaseGainsForSpeed(const HandoverParams& p, ControllerHandle& ctr
 /// Backs the tracked target off by `standoff` (m) along its approach axis
 /// and shifts it by `shift` (m, in the observed body's frame: a give's
 /// descent onto the palm, presentation_descent.hpp), the posture reference
-/// with it. RT safe.
+/// with it. `rate` (m/s) and `acceleration` (m/s^2): how the standoff
+/// changes now (a funnel's slide), fed forward to the tracking. RT safe.
 inline void setStandoff(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double standoff,
-                        const Vector3& shift = Vector3::Zero()) {
+                        const Vector3& shift = Vector3::Zero(), double rate = 0.0, double acceleration = 0.0) {
   const TrackedChoice& c = trackedChoice(ctx, hand);
   const Vector7& q_plan = standoff > 0.0 ? c.q_pre : c.q_target;
-  ctrl.setTrackingOffset(TrackingOffset{
-      Eigen::Translation3d(shift) * c.offset * Eigen::Translation3d(0.0, 0.0, -standoff), c.planned, q_plan});
+  ctrl.setTrackingOffset(TrackingOffset{Eigen::Translation3d(shift) * c.offset * Eigen::Translation3d(0.0, 0.0, -standoff),
+                                        c.planned, q_plan, -rate, -acceleration});
   ctx.tracking_standoff = standoff;
+  ctx.tracking_standoff_rate = rate;
   ctx.tracking_shift = shift;
   if (c.planned) ctrl.setPostureTarget(q_plan);
 }

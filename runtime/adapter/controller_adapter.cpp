@@ -56,9 +56,12 @@ void ControllerAdapter::setTaskOffset(int task, const fsm::TrackingOffset& offse
 }
 
 void ControllerAdapter::applyOffset() {
-  controller_.setTaskOffset(offset_task_, makeTrackingOffset(placement_.target_in_observed, object_grasp_,
-                                                             target_kind_ == fsm::ObservationTarget::kObject,
-                                                             placement_.planned, placement_.joint_plan));
+  control::GraspOffset g = makeTrackingOffset(placement_.target_in_observed, object_grasp_,
+                                              target_kind_ == fsm::ObservationTarget::kObject, placement_.planned,
+                                              placement_.joint_plan);
+  g.approach_speed = placement_.approach_speed;
+  g.approach_acceleration = placement_.approach_acceleration;
+  controller_.setTaskOffset(offset_task_, g);
 }
 
 void ControllerAdapter::setSpeedScale(double scale) {

@@ -138,5 +138,24 @@ TEST(PhysicalExchange, AFastPullIsAnsweredWithinTwoCentimetres) {
   EXPECT_TRUE(m.felt) << "the fingers opened before the hand moved";
 }
 
+// A person who withdraws as the fingers close on the object (h2r_taken_back,
+// a retry from the benchmark) takes it back: the fingers let go and the
+// robot tries again when they return. Held on to, the arm was dragged after
+// them (216 velocity-limit steps) once the grasp came as soon as the object
+// arrived.
+TEST(PhysicalExchange, APersonWhoTakesTheObjectBackIsNotDraggedAfter) {
+  testing::ScratchDir dir("taken_back");
+  app::RunOptions opt;
+  opt.out_dir = dir.file("out");
+  opt.plots = false;
+  const app::RunSummary s =
+      app::runScenario(scenario::parseScenario(testing::repoPath("tests/app/run/data/h2r_taken_back.yaml")), opt);
+  EXPECT_EQ(s.limit_violations.velocity, 0) << app::formatSummary(s);
+  EXPECT_EQ(s.limit_violations.position, 0);
+  EXPECT_EQ(s.human_contacts, 0);
+  EXPECT_EQ(s.outcome, "success") << app::formatSummary(s);
+  EXPECT_GE(s.retries, 1);  // let go, then taken when they came back
+}
+
 }  // namespace
 }  // namespace handover

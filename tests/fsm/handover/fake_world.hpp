@@ -28,6 +28,7 @@ struct RecordingController : ControllerInterface {
   bool tracking = false;
   Isometry offset = Isometry::Identity();
   bool offset_planned = false;
+  double offset_speed = 0.0, offset_acceleration = 0.0;  // the offset's slide fed forward (m/s, m/s^2)
   bool pose_active = false;
   Isometry pose = Isometry::Identity();
   bool posture_active = false;
@@ -106,6 +107,8 @@ struct RecordingController : ControllerInterface {
     if (task != 0) return;
     offset = o.target_in_observed;
     offset_planned = o.planned;
+    offset_speed = o.approach_speed;
+    offset_acceleration = o.approach_acceleration;
     if (record) calls.push_back("offset");
   }
   void setSpeedScale(double s) override {
@@ -293,14 +296,17 @@ struct Rig {
   bool plan_stage = true;
   /// anticipate_reach: the shipped table with params.tracking.anticipate_reach on.
   /// shape: the object's (unknown: the gripper slides straight in).
+  /// edit: changes to the shipped table before it is loaded.
   explicit Rig(bool robot_starts_with_object = false, bool anticipate_reach = false,
-               const io::ObjectShape& shape = io::ObjectShape{}) {
+               const io::ObjectShape& shape = io::ObjectShape{},
+               const std::function<void(YAML::Node&)>& edit = nullptr) {
     ObjectInfo obj;
     obj.mass = world.mass;
     obj.shape = shape;
-    if (anticipate_reach) {
+    if (anticipate_reach || edit) {
       YAML::Node doc = YAML::LoadFile(HandoverFsm::defaultConfigPath());
-      doc["params"]["tracking"]["anticipate_reach"] = true;
+      if (anticipate_reach) doc["params"]["tracking"]["anticipate_reach"] = true;
+      if (edit) edit(doc);
       fsm = std::make_unique<HandoverFsm>(YamlReader(doc, HandoverFsm::defaultConfigPath(), ""), ctl, obj);
     } else {
       fsm = HandoverFsm::fromFile(HandoverFsm::defaultConfigPath(), ctl, obj);

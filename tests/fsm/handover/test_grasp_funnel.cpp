@@ -3,6 +3,7 @@
 // geometry.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Geometry>
@@ -114,6 +115,69 @@ TEST(GraspFunnel, GraspOffTheMidPlaneCountsTheObjectsOwnOffset) {
   const Isometry grasp = sideGrasp(p + Vector3(0.0, 0.005, 0.0));
   const FingerFit f = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
   EXPECT_NEAR(f.fit, 0.005, 1e-12);
+}
+
+// The funnel over time with an acceleration limit: a smooth slide within its
+// speed and acceleration, braking in time, ending at the goal at rest; what it
+// reports is what it does (the rate is the standoff's derivative).
+TEST(GraspFunnelSlide, ReachesTheGoalWithinItsSpeedAndAccelerationAndStopsThere) {
+  GraspFunnel f;
+  f.max_standoff = 0.08;
+  f.speed = 0.4;
+  f.acceleration = 4.0;
+  const double dt = 0.001;
+  f.restart(0.0);
+  GraspFunnel::Slide s{0.08, 0.0, 0.0};
+  double t = 0.0, fastest = 0.0, arrived = -1.0;
+  for (int k = 1; k <= 1000; ++k) {
+    t = k * dt;
+    const GraspFunnel::Slide next = f.step(s.standoff, s.rate, 0.0, t);
+    EXPECT_LE(std::abs(next.rate), f.speed + 1e-12);
+    EXPECT_LE(std::abs(next.acceleration), f.acceleration + 1e-9);
+    EXPECT_GE(next.standoff, 0.0);                    // never past the goal
+    EXPECT_LE(next.standoff, s.standoff + 1e-15);     // only in
+    EXPECT_NEAR(next.standoff - s.standoff, next.rate * dt, 1e-9);
+    fastest = std::max(fastest, std::abs(next.rate));
+    s = next;
+    if (arrived < 0.0 && s.standoff == 0.0) arrived = t;
+  }
+  EXPECT_EQ(s.standoff, 0.0);
+  EXPECT_EQ(s.rate, 0.0);
+  EXPECT_EQ(s.acceleration, 0.0);  // at rest: nothing left to feed forward
+  EXPECT_NEAR(fastest, f.speed, 1e-9);
+  // the time-optimal profile: 0.1 s up to speed (2 cm), 4 cm at speed, 0.1 s down
+  EXPECT_NEAR(arrived, 0.3, 0.01);
+}
+
+TEST(GraspFunnelSlide, BacksOffSmoothlyWhenTheGoalMovesOut) {
+  GraspFunnel f;
+  f.max_standoff = 0.08;
+  f.speed = 0.4;
+  f.acceleration = 4.0;
+  f.restart(0.0);
+  // sliding in at full speed when the fit is lost: the rate turns around at the acceleration limit
+  GraspFunnel::Slide s{0.04, -0.4, 0.0};
+  double lowest = s.standoff;
+  for (int k = 1; k <= 500; ++k) {
+    const GraspFunnel::Slide next = f.step(s.standoff, s.rate, 0.08, k * 0.001);
+    EXPECT_LE(std::abs(next.rate - s.rate), 4.0 * 0.001 + 1e-12);
+    s = next;
+    lowest = std::min(lowest, s.standoff);
+  }
+  EXPECT_NEAR(lowest, 0.04 - 0.4 * 0.4 / (2.0 * 4.0), 1e-3);  // its braking distance further in
+  EXPECT_EQ(s.standoff, 0.08);
+  EXPECT_EQ(s.rate, 0.0);
+}
+
+TEST(GraspFunnelSlide, WithoutAnAccelerationLimitMovesAtItsSpeed) {
+  GraspFunnel f;
+  f.max_standoff = 0.08;
+  f.speed = 0.4;
+  f.restart(0.0);
+  const GraspFunnel::Slide s = f.step(0.08, 0.0, 0.0, 0.01);
+  EXPECT_NEAR(s.standoff, 0.076, 1e-12);
+  EXPECT_NEAR(s.rate, -0.4, 1e-9);
+  EXPECT_EQ(f.step(0.001, 0.0, 0.0, 0.02).standoff, 0.0);
 }
 
 }  // namespace

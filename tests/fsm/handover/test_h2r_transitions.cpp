@@ -242,6 +242,40 @@ TEST(HandoverH2R, ApproachSlidesInOnceTheObjectHasArrivedAndFits) {
   EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Grasp")) << rig.fsm->activePath();
 }
 
+// With standoff_acceleration (off as shipped: docs/results.md) the slide
+// from the pre-grasp pose to the grasp is a profile within the funnel's
+// speed and acceleration whose rate and acceleration go to the tracking with
+// the offset, and the offset moves by that rate: the TCP slides with it
+// instead of lagging it. It ends at the grasp, at rest.
+TEST(HandoverH2R, TheSlideInIsFedForwardWithItsRate) {
+  Rig rig(false, false, io::ObjectShape{}, [](YAML::Node& doc) {
+    YAML::Node h2r = doc["machine"]["states"]["Handover"]["states"]["HumanToRobot"]["states"];
+    h2r["Approach"]["standoff_acceleration"] = 4.0;
+    h2r["Grasp"]["standoff_acceleration"] = 4.0;
+  });
+  const Vector3 grasp_in_object = rig.ctl.offset.translation();
+  const auto standoff = [&] { return (rig.ctl.offset.translation() - grasp_in_object).norm(); };
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->context().tracking_standoff < 0.079; }, 10.0));
+  double fastest = 0.0, last = standoff();
+  ASSERT_TRUE(rig.runUntil(
+      [&] {
+        const double now = standoff();
+        // the offset moves in by the rate fed forward (m per 1 ms step)
+        EXPECT_NEAR(last - now, rig.ctl.offset_speed * World::kDt, 1e-9);
+        EXPECT_LE(std::abs(rig.ctl.offset_acceleration), 4.0 + 1e-9);
+        fastest = std::max(fastest, rig.ctl.offset_speed);
+        last = now;
+        return now == 0.0;
+      },
+      1.0));
+  EXPECT_NEAR(fastest, 0.4, 1e-9);  // config/fsm.yaml standoff_speed
+  rig.runFor(0.01);
+  EXPECT_EQ(rig.ctl.offset_speed, 0.0);
+  EXPECT_EQ(rig.ctl.offset_acceleration, 0.0);
+}
+
 TEST(HandoverH2R, ApproachStartsOnceTheReachsEndIsKnownNotOnceTheObjectArrives) {
   // a receiver starts to move with the giver: once perception knows where the reach ends (in
   // the workspace), the approach starts while the object is still outside it
@@ -370,6 +404,34 @@ TEST(HandoverH2R, NoReleaseOpensAndRetreatsWithoutPayload) {
                                   "RetreatOpen", "WaitAgain"}));
   EXPECT_EQ(rig.fsm->stats().aborts, 1);
   EXPECT_EQ(rig.fsm->stats().retries, 1);
+}
+
+// A person who takes the object back while the fingers hold it (they
+// withdrew as the fingers closed: a retry, an abort) is let go at once, not
+// dragged after until the release times out: the arm was pulled past its
+// velocity limits. Felt and seen: a hand going back alone is not enough (the
+// object's estimate sits in it; one who lets go and leaves: the other tests).
+TEST(HandoverH2R, APersonWhoTakesTheObjectBackIsLetGo) {
+  Rig rig;
+  const Vector3 home = rig.world.hand;  // where their hand rested before it reached
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("WaitForRelease", 10.0));
+  rig.runFor(0.3);
+  EXPECT_EQ(rig.fsm->activePath(), "Handover/HumanToRobot/WaitForRelease");  // held still: nothing happens
+  // their hand goes back, the robot following without a pull felt: seen only, not taken back
+  rig.world.moveHand(home, 0.8);
+  rig.runFor(0.1);
+  EXPECT_EQ(rig.fsm->activePath(), "Handover/HumanToRobot/WaitForRelease");
+  // felt too: the wrist feels them pull that way
+  rig.world.pull = 15.0 * (home - kMeet).normalized();
+  const double since = rig.world.time;
+  ASSERT_TRUE(rig.runUntilState("RetreatOpen", 1.0));
+  EXPECT_LT(rig.world.time - since, 0.1);
+  EXPECT_EQ(rig.ctl.gripper_width, rig.fsm->params().gripper_open_width);
+  EXPECT_EQ(rig.ctl.count("payload 0.30"), 0);
+  EXPECT_TRUE(rig.world.person_holds);
+  ASSERT_TRUE(rig.runUntilState("WaitAgain", 5.0));
+  EXPECT_EQ(rig.fsm->stats().aborts, 1);
 }
 
 // After a take the object leaves the person's hand upward (the gripper came

@@ -100,6 +100,8 @@ TEST(PlannedTargets, ApproachFollowsASwitchAndGraspCommits) {
   EXPECT_TRUE(rig.ctl.posture.isApprox(rig.world.object_plan.q_pre));
   EXPECT_EQ(rig.fsm->context().grasp.index, 4);
   ASSERT_TRUE(rig.runUntilState("Grasp", 10.0)) << rig.fsm->activePath();
+  // the slide goes on from the approach's standoff (at most 8 cm: 0.3 s at 0.4 m/s, 4 m/s^2)
+  rig.runUntil([&] { return rig.fsm->context().tracking_standoff == 0.0; }, 0.5);
   rig.step();
   EXPECT_TRUE(same(rig.ctl.offset, rig.world.object_plan.target_in_observed));  // no standoff: the grasp itself
   EXPECT_TRUE(rig.ctl.posture.isApprox(rig.world.object_plan.q_target));
