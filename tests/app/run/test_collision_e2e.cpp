@@ -15,17 +15,14 @@
 #include "control/collision/collision_config.hpp"
 #include "scenes/scenario/scenario_parser.hpp"
 #include "tests/app/run/run_files.hpp"
+#include "tests/app/run/run_repo_file.hpp"
 
 namespace handover {
 namespace {
 
 /// Runs the scenario file at `repo_file` (a path in the repository) into a scratch folder, no plots.
 app::RunSummary runFile(const testing::ScratchDir& dir, const std::string& repo_file) {
-  const scenario::Scenario sc = scenario::parseScenario(testing::repoPath(repo_file));
-  app::RunOptions opt;
-  opt.out_dir = dir.file("out");
-  opt.plots = false;
-  return app::runScenario(sc, opt);
+  return testing::runRepoFile(dir, repo_file);
 }
 
 TEST(CollisionEndToEnd, ForearmInTheWayIsAvoided) {

@@ -15,6 +15,7 @@
 #include "app/run/run_scenario.hpp"
 #include "scenes/scenario/scenario_parser.hpp"
 #include "tests/app/run/run_files.hpp"
+#include "tests/app/run/run_repo_file.hpp"
 
 namespace handover {
 namespace {
@@ -145,11 +146,7 @@ TEST(PhysicalExchange, AFastPullIsAnsweredWithinTwoCentimetres) {
 // arrived.
 TEST(PhysicalExchange, APersonWhoTakesTheObjectBackIsNotDraggedAfter) {
   testing::ScratchDir dir("taken_back");
-  app::RunOptions opt;
-  opt.out_dir = dir.file("out");
-  opt.plots = false;
-  const app::RunSummary s =
-      app::runScenario(scenario::parseScenario(testing::repoPath("tests/app/run/data/h2r_taken_back.yaml")), opt);
+  const app::RunSummary s = testing::runRepoFile(dir, "tests/app/run/data/h2r_taken_back.yaml");
   EXPECT_EQ(s.limit_violations.velocity, 0) << app::formatSummary(s);
   EXPECT_EQ(s.limit_violations.position, 0);
   EXPECT_EQ(s.human_contacts, 0);

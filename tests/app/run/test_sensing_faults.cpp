@@ -12,6 +12,7 @@
 #include "perception/csv_pose_source.hpp"
 #include "scenes/scenario/scenario_parser.hpp"
 #include "tests/app/run/run_files.hpp"
+#include "tests/app/run/run_repo_file.hpp"
 
 namespace handover {
 namespace {
@@ -116,11 +117,7 @@ TEST(SensingFaults, ShippedSensingScenariosSucceed) {
 // timed out, twice, and the person gave up
 TEST(SensingFaults, AFingertipThatLandsOnTheObjectIsFeltAndTheGraspMovesOver) {
   testing::ScratchDir dir("finger_lands");
-  app::RunOptions opt;
-  opt.out_dir = dir.file("out");
-  opt.plots = false;
-  const app::RunSummary r =
-      app::runScenario(scenario::parseScenario(testing::repoPath("tests/app/run/data/h2r_finger_lands.yaml")), opt);
+  const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/h2r_finger_lands.yaml");
   EXPECT_EQ(r.outcome, "success");
   const auto count = [&r](const std::string& state) {
     return std::count_if(r.states.begin(), r.states.end(),
@@ -129,7 +126,7 @@ TEST(SensingFaults, AFingertipThatLandsOnTheObjectIsFeltAndTheGraspMovesOver) {
   EXPECT_EQ(count("/Grasp"), 1) << "the grasp needed another attempt";
   EXPECT_EQ(count("/RetreatOpen"), 0);
   // closed within 2 s of entering Grasp, not at its 5 s timeout
-  const testing::CsvTable log = testing::readCsv(opt.out_dir + "/log.csv");
+  const testing::CsvTable log = testing::readCsv(dir.file("out") + "/log.csv");
   double grasp_start = -1.0, closed = -1.0;
   for (std::size_t i = 0; i < log.rows.size(); ++i) {
     const bool in_grasp = log.rows[i][1].find("/Grasp") != std::string::npos;
