@@ -38,6 +38,12 @@ double funnelStandoff(const FingerFit& f, double max_standoff, double margin) {
 }
 
 GraspFunnel::Slide GraspFunnel::step(double standoff, double rate, double goal, double time) {
+  Slide s = profile(standoff, rate, goal, time);
+  if (!feed_forward) s.rate = s.acceleration = 0.0;
+  return s;
+}
+
+GraspFunnel::Slide GraspFunnel::profile(double standoff, double rate, double goal, double time) {
   const double dt = std::max(0.0, time - last_time);
   last_time = time;
   Slide s;

@@ -58,6 +58,9 @@ struct GraspFunnel {
   double max_standoff = 0.0;  ///< m, the funnel's mouth (0: no funnel)
   double speed = 0.1;         ///< m/s, fastest change of the standoff
   double acceleration = 0.0;  ///< m/s^2, fastest change of its rate (0: none, the rate jumps)
+  /// Report the slide's rate and acceleration (for the tracking's feed-forward);
+  /// false: 0, the standoff a set-point the PD closes on (as shipped, docs/results.md)
+  bool feed_forward = false;
   double margin = 0.5;        ///< share of the clearance the last slide keeps to spare
   double last_time = 0.0;     ///< s, the last step
 
@@ -75,6 +78,9 @@ struct GraspFunnel {
   /// moving at `rate` (m/s), toward `goal` (m; funnelStandoff of the fit, or
   /// max_standoff where the caller keeps the funnel closed).
   Slide step(double standoff, double rate, double goal, double time);
+
+ private:
+  Slide profile(double standoff, double rate, double goal, double time);
 };
 
 }  // namespace handover::fsm

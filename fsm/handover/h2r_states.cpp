@@ -15,6 +15,9 @@ void readFunnel(const YamlReader& def, double standoff, GraspFunnel& funnel) {
   funnel.max_standoff = standoff;
   funnel.speed = HandoverState::readPositive(def, "standoff_speed", 1.0);
   if (def.has("standoff_acceleration")) funnel.acceleration = HandoverState::readPositive(def, "standoff_acceleration", 20.0);
+  if (auto f = def.optionalChild("standoff_feed_forward")) funnel.feed_forward = f->asBool();
+  if (funnel.acceleration > 0.0 && !funnel.feed_forward)
+    def.child("standoff_acceleration").fail("a smooth slide is fed forward: needs standoff_feed_forward: true");
   funnel.margin = HandoverState::readRange(def, "funnel_margin", 0.0, 1.0);
 }
 
@@ -273,7 +276,7 @@ bool Grasp::onRun(HandoverContext& ctx) {
   }
   // closing while the slide still runs (the TCP within the tolerance of the grasp): it
   // ends at the grasp, not frozen mid-way with its rate still fed forward
-  if (ctx.tracking_standoff != 0.0 || ctx.tracking_standoff_rate != 0.0) {
+  if (funnel_.feed_forward && (ctx.tracking_standoff != 0.0 || ctx.tracking_standoff_rate != 0.0)) {
     const GraspFunnel::Slide slide = funnel_.step(ctx.tracking_standoff, ctx.tracking_standoff_rate, 0.0, ctx.time);
     setStandoff(ctx, ctrl(), false, slide.standoff, touch_shift_, slide.rate, slide.acceleration);
   }

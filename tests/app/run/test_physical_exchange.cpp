@@ -140,10 +140,10 @@ TEST(PhysicalExchange, AFastPullIsAnsweredWithinTwoCentimetres) {
 }
 
 // A person who withdraws as the fingers close on the object (h2r_taken_back,
-// a retry from the benchmark) takes it back: the fingers let go and the
-// robot tries again when they return. Held on to, the arm was dragged after
-// them (216 velocity-limit steps) once the grasp came as soon as the object
-// arrived.
+// a retry from the benchmark withdrawing 0.8 s after the reach) takes it
+// back: the fingers let go and the robot tries again when they return. Held
+// on to, the arm was dragged after them (190 velocity- and 62 position-limit
+// steps).
 TEST(PhysicalExchange, APersonWhoTakesTheObjectBackIsNotDraggedAfter) {
   testing::ScratchDir dir("taken_back");
   const app::RunSummary s = testing::runRepoFile(dir, "tests/app/run/data/h2r_taken_back.yaml");

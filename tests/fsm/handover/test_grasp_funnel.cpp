@@ -125,6 +125,7 @@ TEST(GraspFunnelSlide, ReachesTheGoalWithinItsSpeedAndAccelerationAndStopsThere)
   f.max_standoff = 0.08;
   f.speed = 0.4;
   f.acceleration = 4.0;
+  f.feed_forward = true;
   const double dt = 0.001;
   f.restart(0.0);
   GraspFunnel::Slide s{0.08, 0.0, 0.0};
@@ -154,6 +155,7 @@ TEST(GraspFunnelSlide, BacksOffSmoothlyWhenTheGoalMovesOut) {
   f.max_standoff = 0.08;
   f.speed = 0.4;
   f.acceleration = 4.0;
+  f.feed_forward = true;
   f.restart(0.0);
   // sliding in at full speed when the fit is lost: the rate turns around at the acceleration limit
   GraspFunnel::Slide s{0.04, -0.4, 0.0};
@@ -173,11 +175,18 @@ TEST(GraspFunnelSlide, WithoutAnAccelerationLimitMovesAtItsSpeed) {
   GraspFunnel f;
   f.max_standoff = 0.08;
   f.speed = 0.4;
+  f.feed_forward = true;
   f.restart(0.0);
   const GraspFunnel::Slide s = f.step(0.08, 0.0, 0.0, 0.01);
   EXPECT_NEAR(s.standoff, 0.076, 1e-12);
   EXPECT_NEAR(s.rate, -0.4, 1e-9);
   EXPECT_EQ(f.step(0.001, 0.0, 0.0, 0.02).standoff, 0.0);
+  // not fed forward: the same standoff, no rate to feed
+  f.feed_forward = false;
+  f.restart(0.0);
+  const GraspFunnel::Slide set_point = f.step(0.08, 0.0, 0.0, 0.01);
+  EXPECT_EQ(set_point.standoff, s.standoff);
+  EXPECT_EQ(set_point.rate, 0.0);
 }
 
 }  // namespace

@@ -242,7 +242,8 @@ TEST(HandoverH2R, ApproachSlidesInOnceTheObjectHasArrivedAndFits) {
   EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Grasp")) << rig.fsm->activePath();
 }
 
-// With standoff_acceleration (off as shipped: docs/results.md) the slide
+// With standoff_feed_forward and standoff_acceleration (off as shipped:
+// docs/results.md) the slide
 // from the pre-grasp pose to the grasp is a profile within the funnel's
 // speed and acceleration whose rate and acceleration go to the tracking with
 // the offset, and the offset moves by that rate: the TCP slides with it
@@ -250,8 +251,10 @@ TEST(HandoverH2R, ApproachSlidesInOnceTheObjectHasArrivedAndFits) {
 TEST(HandoverH2R, TheSlideInIsFedForwardWithItsRate) {
   Rig rig(false, false, io::ObjectShape{}, [](YAML::Node& doc) {
     YAML::Node h2r = doc["machine"]["states"]["Handover"]["states"]["HumanToRobot"]["states"];
-    h2r["Approach"]["standoff_acceleration"] = 4.0;
-    h2r["Grasp"]["standoff_acceleration"] = 4.0;
+    for (const char* state : {"Approach", "Grasp"}) {
+      h2r[state]["standoff_feed_forward"] = true;
+      h2r[state]["standoff_acceleration"] = 4.0;
+    }
   });
   const Vector3 grasp_in_object = rig.ctl.offset.translation();
   const auto standoff = [&] { return (rig.ctl.offset.translation() - grasp_in_object).norm(); };
