@@ -117,17 +117,23 @@ TEST(GraspFunnel, GraspOffTheMidPlaneCountsTheObjectsOwnOffset) {
   EXPECT_NEAR(f.fit, 0.005, 1e-12);
 }
 
+/// The shipped funnel's mouth and speed, fed forward; `acceleration` 0: first order.
+GraspFunnel slideFunnel(double acceleration) {
+  GraspFunnel f;
+  f.max_standoff = 0.08;
+  f.speed = 0.4;
+  f.acceleration = acceleration;
+  f.feed_forward = true;
+  f.restart(0.0);
+  return f;
+}
+
 // The funnel over time with an acceleration limit: a smooth slide within its
 // speed and acceleration, braking in time, ending at the goal at rest; what it
 // reports is what it does (the rate is the standoff's derivative).
 TEST(GraspFunnelSlide, ReachesTheGoalWithinItsSpeedAndAccelerationAndStopsThere) {
-  GraspFunnel f;
-  f.max_standoff = 0.08;
-  f.speed = 0.4;
-  f.acceleration = 4.0;
-  f.feed_forward = true;
+  GraspFunnel f = slideFunnel(4.0);
   const double dt = 0.001;
-  f.restart(0.0);
   GraspFunnel::Slide s{0.08, 0.0, 0.0};
   double t = 0.0, fastest = 0.0, arrived = -1.0;
   for (int k = 1; k <= 1000; ++k) {
@@ -151,12 +157,7 @@ TEST(GraspFunnelSlide, ReachesTheGoalWithinItsSpeedAndAccelerationAndStopsThere)
 }
 
 TEST(GraspFunnelSlide, BacksOffSmoothlyWhenTheGoalMovesOut) {
-  GraspFunnel f;
-  f.max_standoff = 0.08;
-  f.speed = 0.4;
-  f.acceleration = 4.0;
-  f.feed_forward = true;
-  f.restart(0.0);
+  GraspFunnel f = slideFunnel(4.0);
   // sliding in at full speed when the fit is lost: the rate turns around at the acceleration limit
   GraspFunnel::Slide s{0.04, -0.4, 0.0};
   double lowest = s.standoff;
@@ -172,11 +173,7 @@ TEST(GraspFunnelSlide, BacksOffSmoothlyWhenTheGoalMovesOut) {
 }
 
 TEST(GraspFunnelSlide, WithoutAnAccelerationLimitMovesAtItsSpeed) {
-  GraspFunnel f;
-  f.max_standoff = 0.08;
-  f.speed = 0.4;
-  f.feed_forward = true;
-  f.restart(0.0);
+  GraspFunnel f = slideFunnel(0.0);
   const GraspFunnel::Slide s = f.step(0.08, 0.0, 0.0, 0.01);
   EXPECT_NEAR(s.standoff, 0.076, 1e-12);
   EXPECT_NEAR(s.rate, -0.4, 1e-9);
