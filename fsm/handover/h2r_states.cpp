@@ -21,6 +21,16 @@ void readFunnel(const YamlReader& def, double standoff, GraspFunnel& funnel) {
   funnel.margin = HandoverState::readRange(def, "funnel_margin", 0.0, 1.0);
 }
 
+/// One step of `funnel`'s slide toward `goal` (m) from the standoff tracked now, sent to the
+/// tracking (with `shift`) when it moves or its rate changes. Returns the standoff (m).
+double slideToward(HandoverContext& ctx, ControllerHandle& ctrl, GraspFunnel& funnel, double goal,
+                   const Vector3& shift) {
+  const GraspFunnel::Slide slide = funnel.step(ctx.tracking_standoff, ctx.tracking_standoff_rate, goal, ctx.time);
+  if (slide.standoff != ctx.tracking_standoff || slide.rate != ctx.tracking_standoff_rate)
+    setStandoff(ctx, ctrl, false, slide.standoff, shift, slide.rate, slide.acceleration);
+  return slide.standoff;
+}
+
 /// How the object sits between the open fingers for `grasp` (world).
 FingerFit fitFor(const HandoverContext& ctx, const Isometry& object, const Isometry& grasp) {
   return fingerFit(ctx.in.tcp_pose, object, grasp, ctx.object.shape, ctx.params->gripper_open_width,
@@ -119,12 +129,10 @@ void Approach::slideIn(HandoverContext& ctx, bool arrived) {
     f.fit -= std::abs((grasp.translation() - ctx.in.tcp_pose.translation()).dot(grasp.linear().col(0)));
     goal = funnelStandoff(f, funnel_.max_standoff, funnel_.margin);
   }
-  const GraspFunnel::Slide slide = funnel_.step(ctx.tracking_standoff, ctx.tracking_standoff_rate, goal, ctx.time);
-  if (slide.standoff == ctx.tracking_standoff && slide.rate == ctx.tracking_standoff_rate) return;
-  setStandoff(ctx, ctrl(), false, slide.standoff, ctx.tracking_shift, slide.rate, slide.acceleration);
+  const double standoff = slideToward(ctx, ctrl(), funnel_, goal, ctx.tracking_shift);
   // in the funnel the gripper and the hand share the object, as in Grasp: the rules that keep
   // the fingers off the object and apart from the hand would stop the slide short of it
-  ctrl().relaxHandClearance(slide.standoff < funnel_.max_standoff);
+  ctrl().relaxHandClearance(standoff < funnel_.max_standoff);
 }
 
 bool Approach::onRun(HandoverContext& ctx) {
@@ -252,10 +260,7 @@ bool Grasp::onRun(HandoverContext& ctx) {
     FingerFit f = fitNow(ctx);
     if (touch_force_ > 0.0 && feelTouch(ctx, f)) f = fitNow(ctx);  // the corrected grasp's fit
     // the funnel's standoff, reached at standoff_speed (the fit is as noisy as the object's pose)
-    const GraspFunnel::Slide slide = funnel_.step(ctx.tracking_standoff, ctx.tracking_standoff_rate,
-                                                  funnelStandoff(f, funnel_.max_standoff, funnel_.margin), ctx.time);
-    if (slide.standoff != ctx.tracking_standoff || slide.rate != ctx.tracking_standoff_rate)
-      setStandoff(ctx, ctrl(), false, slide.standoff, touch_shift_, slide.rate, slide.acceleration);
+    slideToward(ctx, ctrl(), funnel_, funnelStandoff(f, funnel_.max_standoff, funnel_.margin), touch_shift_);
     // closes only on an object between the fingers (the funnel's last part)
     if (f.fit <= 0.0 || positionError(ctx.in.tcp_pose, correctedGraspFrame(ctx)) > pos_tol_ ||
         !alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_))
@@ -276,10 +281,7 @@ bool Grasp::onRun(HandoverContext& ctx) {
   }
   // closing while the slide still runs (the TCP within the tolerance of the grasp): it
   // ends at the grasp, not frozen mid-way with its rate still fed forward
-  if (funnel_.feed_forward && (ctx.tracking_standoff != 0.0 || ctx.tracking_standoff_rate != 0.0)) {
-    const GraspFunnel::Slide slide = funnel_.step(ctx.tracking_standoff, ctx.tracking_standoff_rate, 0.0, ctx.time);
-    setStandoff(ctx, ctrl(), false, slide.standoff, touch_shift_, slide.rate, slide.acceleration);
-  }
+  if (funnel_.feed_forward) slideToward(ctx, ctrl(), funnel_, 0.0, touch_shift_);
   // finger speed over >= 10 ms windows: robust to quantised width readings
   if (ctx.time - last_time_ >= 0.01) {
     finger_speed_ = std::abs(ctx.in.finger_width - last_width_) / (ctx.time - last_time_);

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "fsm/handover/grasp_funnel.hpp"
-#include "fsm/handover/perception_checks.hpp"
 #include "fsm/handover/handover_state.hpp"
+#include "fsm/handover/take_back.hpp"
 
 namespace handover::fsm {
 
@@ -54,9 +54,10 @@ class WaitForPerson : public HandoverState {
 /// current target.
 /// Keys: near_distance (m, TCP to target frame); standoff (m, the pre-grasp
 /// distance along the approach axis) with, for a take's funnel,
-/// standoff_speed (m/s), standoff_acceleration (m/s^2, optional: a slide
-/// fed forward to the tracking, GraspFunnel) and funnel_margin (share of the
-/// clearance, 0..1);
+/// standoff_speed (m/s), standoff_feed_forward (bool, default false: the
+/// slide's rate fed forward to the tracking, GraspFunnel) with
+/// standoff_acceleration (m/s^2, optional: a smooth slide) and
+/// funnel_margin (share of the clearance, 0..1);
 /// a give's lift (m, optional, default 0: none) with lift_speed (m/s): the
 /// presentation is approached from above the receiver's hand
 /// (presentation_descent.hpp).
@@ -84,23 +85,6 @@ class Approach : public HandoverState {
   GraspFunnel funnel_;              ///< a take's continuous approach; max_standoff 0: none
 };
 
-/// A person taking back the object the fingers close on or hold while they
-/// still carry it: pulledBack (perception_checks.hpp) with
-/// params.take_back_force, for a while. RT safe.
-struct TakeBack {
-  double since = -1.0;  ///< s, the pull began (< 0: none)
-  void restart() { since = -1.0; }
-  /// True once the pull has lasted `hold` s (never with take_back_force 0).
-  bool pulled(const HandoverContext& ctx, double hold) {
-    if (ctx.params->take_back_force <= 0.0 || !pulledBack(ctx, ctx.params->take_back_force)) {
-      since = -1.0;
-      return false;
-    }
-    if (since < 0.0) since = ctx.time;
-    return ctx.time - since >= hold;
-  }
-};
-
 /// [Grasped, Missed, Withdrawn] Keeps tracking the grasp frame; closes when
 /// position, orientation and relative speed errors are within tolerance
 /// (recording the force before the grasp). Once closing for at least
@@ -124,8 +108,9 @@ struct TakeBack {
 /// Keys: position_tolerance (m), orientation_tolerance_deg, speed_tolerance
 /// (m/s), confirm_time (s), stall_speed (m/s), min_width (m), standoff (m,
 /// optional, default 0: no funnel) with standoff_speed (m/s),
-/// standoff_acceleration (m/s^2, optional: the slide goes on from the
-/// approach's, fed forward, and ends at the grasp also once closing) and
+/// standoff_feed_forward (bool, default false: the slide fed forward, and
+/// ended at the grasp also once closing) with standoff_acceleration (m/s^2,
+/// optional: a smooth slide that goes on from the approach's) and
 /// funnel_margin (share of the clearance, 0..1); touch_force (N, optional,
 /// default 0: no correction) with touch_time (s) and max_touches.
 class Grasp : public HandoverState {

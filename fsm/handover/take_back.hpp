@@ -1,0 +1,29 @@
+// A person taking back the object they share with the robot: the pull felt
+// and seen (pulledBack, perception_checks.hpp) lasting long enough to be
+// more than a jolt. Used while the fingers close on the object (Grasp) and
+// while they hold it before the release (WaitForRelease). RT safe.
+#pragma once
+
+#include "fsm/handover/handover_context.hpp"
+#include "fsm/handover/perception_checks.hpp"
+
+namespace handover::fsm {
+
+/// A person taking back the object the fingers close on or hold while they
+/// still carry it: pulledBack (perception_checks.hpp) with
+/// params.take_back_force, for a while. RT safe.
+struct TakeBack {
+  double since = -1.0;  ///< s, the pull began (< 0: none)
+  void restart() { since = -1.0; }
+  /// True once the pull has lasted `hold` s (never with take_back_force 0).
+  bool pulled(const HandoverContext& ctx, double hold) {
+    if (ctx.params->take_back_force <= 0.0 || !pulledBack(ctx, ctx.params->take_back_force)) {
+      since = -1.0;
+      return false;
+    }
+    if (since < 0.0) since = ctx.time;
+    return ctx.time - since >= hold;
+  }
+};
+
+}  // namespace handover::fsm
