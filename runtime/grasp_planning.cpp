@@ -105,6 +105,8 @@ void GraspPlanning::reset() {
   object_plan_ = fsm::TrackingPlan{};
   hand_plan_ = fsm::TrackingPlan{};
   object_stamp_ = hand_stamp_ = -1.0;
+  last_person_.reset();
+  last_torso_.reset();
 }
 
 void GraspPlanning::copyChoice(const cg::GraspChoice& c, fsm::TrackingPlan& plan) {
@@ -155,6 +157,10 @@ int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool 
 void GraspPlanning::update(const perception::PerceptionEstimate& est, const control::Vector7& q, bool robot_holds,
                            const control::Isometry* torso) {
   const bool fresh_sample = est.human.valid && !est.human.stale;
+  if (fresh_sample) {
+    last_person_ = est.human;
+    if (torso != nullptr) last_torso_ = *torso;
+  }
   if (!robot_holds) {
     if (fresh_sample && est.object.valid && est.human.stamp != object_stamp_) {
       object_stamp_ = est.human.stamp;
@@ -175,11 +181,29 @@ void GraspPlanning::update(const perception::PerceptionEstimate& est, const cont
 fsm::ArmPlacement GraspPlanning::uprightPlacement(const control::Isometry& object_in_tcp,
                                                   const control::Vector3& up_axis,
                                                   const control::Vector3& object_position,
-                                                  const control::Vector7& q_now) {
+                                                  const control::Vector7& q_now, double receiver_stop) {
   cg::HeldObject held;
   held.object_in_tcp = object_in_tcp;
   held.up_axis = up_axis;
-  const cg::UprightPlacement p = cg::findUprightPlacement(model_, held, object_position, q_now, settings_.config);
+  int n = 0;
+  if (receiver_stop > 0.0 && last_person_) {
+    n = personObstacles(*last_person_, false, last_torso_ ? &*last_torso_ : nullptr);
+    // their hand now is not where it will be: it comes along the reach
+    obstacles_[2] = obstacles_[static_cast<std::size_t>(--n)];
+    const control::Vector3 shoulder = last_person_->upper_arm.translation();
+    const control::Vector3 to_object = object_position - shoulder;
+    const double length = to_object.norm() - receiver_stop - settings_.hand_radius;
+    if (length > 0.0) {
+      cg::ObstacleCapsule& reach = obstacles_[static_cast<std::size_t>(n++)];
+      reach = cg::ObstacleCapsule{};
+      reach.a = shoulder;
+      reach.b = shoulder + to_object.normalized() * length;
+      reach.radius = settings_.hand_radius;
+      reach.gripper_works_here = true;  // the fingers hold the object where it ends; the palm and the arm keep out
+    }
+  }
+  const cg::UprightPlacement p =
+      cg::findUprightPlacement(model_, held, object_position, q_now, settings_.config, obstacles_.data(), n);
   fsm::ArmPlacement out;
   out.found = p.found;
   out.tcp = p.tcp;

@@ -98,8 +98,14 @@ class GraspPlanning : public fsm::PlannerInterface {
   const fsm::TrackingPlan& handPlan() const { return hand_plan_; }
   const control::grasp::GraspSelector& objectSelector() const { return object_; }
 
+  /// With receiver_stop > 0 the placement is scored against the person as
+  /// last seen (arm, trunk) and against their reach to it: a capsule of the
+  /// hand's radius from their shoulder to where the hand stops, receiver_stop
+  /// short of the object's centre, so the arm waits beside or behind the
+  /// object as seen from them, not across their way to it.
   fsm::ArmPlacement uprightPlacement(const control::Isometry& object_in_tcp, const control::Vector3& up_axis,
-                                     const control::Vector3& object_position, const control::Vector7& q_now) override;
+                                     const control::Vector3& object_position, const control::Vector7& q_now,
+                                     double receiver_stop) override;
 
  private:
   static void copyChoice(const control::grasp::GraspChoice& c, fsm::TrackingPlan& plan);
@@ -113,7 +119,11 @@ class GraspPlanning : public fsm::PlannerInterface {
   control::grasp::GraspSelector hand_;
   fsm::TrackingPlan object_plan_, hand_plan_;
   double object_stamp_ = -1.0, hand_stamp_ = -1.0;
-  std::array<control::grasp::ObstacleCapsule, 3 + kMaxTrunkObstacles> obstacles_;
+  /// The person as last seen (for the carries that wait for a receiver).
+  std::optional<perception::HumanEstimate> last_person_;
+  std::optional<control::Isometry> last_torso_;
+  /// The person's arm, hand, trunk and reach (uprightPlacement).
+  std::array<control::grasp::ObstacleCapsule, 4 + kMaxTrunkObstacles> obstacles_;
 };
 
 /// The presentation selector's options: no twins (a held object turns with the

@@ -27,17 +27,23 @@ struct CarryRequest {
   Vector3 up_axis = Vector3::UnitZ();             ///< object-frame axis to keep along world z (unit)
   Vector3 object_position = Vector3::Zero();      ///< m, world: where the object should go (near)
   Vector7 q = Vector7::Zero();                    ///< rad, the arm when the request was posted
+  /// m: a receiver will reach for the object there, their hand stopping this
+  /// far from its centre; the placement keeps the arm out of their way (0:
+  /// nobody reaches for it)
+  double receiver_stop = 0.0;
 };
 
 class CarryChannel {
  public:
   /// Posts a request (replacing one not yet answered); returns its id (> 0).
-  int post(const Isometry& object_in_tcp, const Vector3& up_axis, const Vector3& object_position, const Vector7& q) {
+  int post(const Isometry& object_in_tcp, const Vector3& up_axis, const Vector3& object_position, const Vector7& q,
+           double receiver_stop = 0.0) {
     request_.id = ++last_id_;
     request_.object_in_tcp = object_in_tcp;
     request_.up_axis = up_axis;
     request_.object_position = object_position;
     request_.q = q;
+    request_.receiver_stop = receiver_stop;
     pending_ = true;
     return request_.id;
   }

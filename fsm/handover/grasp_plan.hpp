@@ -35,12 +35,15 @@ class PlannerInterface {
   virtual ~PlannerInterface() = default;
   /// Where to hold the object (its pose in the TCP frame `object_in_tcp`)
   /// with its axis `up_axis` (object frame, unit) along world z, near
-  /// `object_position` (world, m), starting from q_now. Not
+  /// `object_position` (world, m), starting from q_now; with receiver_stop > 0
+  /// (m, CarryRequest::receiver_stop) away from the path of the person who
+  /// will reach for it there. Not
   /// cheap (about 1.5 ms: many IK solves): never inside the control step;
   /// HandoverFsm::plan calls it to answer a state's carry request
   /// (carry_request.hpp). No allocation.
   virtual ArmPlacement uprightPlacement(const Isometry& object_in_tcp, const Vector3& up_axis,
-                                        const Vector3& object_position, const Vector7& q_now) = 0;
+                                        const Vector3& object_position, const Vector7& q_now,
+                                        double receiver_stop) = 0;
 };
 
 }  // namespace handover::fsm

@@ -159,7 +159,7 @@ void HandoverFsm::step(const HandoverInput& input) {
 void HandoverFsm::plan() {
   if (ctx_.planner == nullptr || !ctx_.carry.pending()) return;
   const CarryRequest& r = ctx_.carry.request();
-  ctx_.carry.answer(ctx_.planner->uprightPlacement(r.object_in_tcp, r.up_axis, r.object_position, r.q));
+  ctx_.carry.answer(ctx_.planner->uprightPlacement(r.object_in_tcp, r.up_axis, r.object_position, r.q, r.receiver_stop));
 }
 
 void HandoverFsm::stop() { machine_->stop(ctx_); }

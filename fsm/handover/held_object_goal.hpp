@@ -51,8 +51,10 @@ class HeldObjectCarry {
   /// `named` kept up). Either way the arm then moves in joint space to an IK
   /// configuration within its limits: a pose task from a far, turned wrist
   /// can stall against a joint limit on the way (an elbow at its limit after
-  /// a give whose wrist had turned 160 degrees).
-  void start(HandoverContext& ctx, ControllerHandle& ctrl, const Isometry& named, const Vector3& up_axis) {
+  /// a give whose wrist had turned 160 degrees). receiver_stop (m, > 0): a
+  /// person will reach for the object there (CarryRequest::receiver_stop).
+  void start(HandoverContext& ctx, ControllerHandle& ctrl, const Isometry& named, const Vector3& up_axis,
+             double receiver_stop = 0.0) {
     goal_ = named;
     request_ = 0;
     ctrl.setPoseTarget(named);
@@ -62,7 +64,7 @@ class HeldObjectCarry {
       return;
     }
     const Isometry object_in_tcp = ctx.objectInTcp();
-    request_ = ctx.carry.post(object_in_tcp, up_axis, (named * object_in_tcp).translation(), ctx.in.q);
+    request_ = ctx.carry.post(object_in_tcp, up_axis, (named * object_in_tcp).translation(), ctx.in.q, receiver_stop);
   }
 
   /// Adopts the answer to this carry's request once it has come: a found

@@ -14,6 +14,7 @@ void HoldReady::configure(const YamlReader& def) {
   pos_tol_ = readPositive(def, "position_tolerance", 0.5);
   settle_speed_ = readPositive(def, "settle_speed", 1.0);
   if (def.has("blocked_time")) blocked_time_ = readRange(def, "blocked_time", 0.0, 10.0);
+  if (def.has("wait_for_person")) wait_for_person_ = readRange(def, "wait_for_person", 0.0, 5.0);
 }
 
 void HoldReady::onStart(HandoverContext& ctx) {
@@ -23,10 +24,29 @@ void HoldReady::onStart(HandoverContext& ctx) {
   if (!ctx.ledger->payloadSet()) ctrl().setPayload(ctx.object.mass, ctx.comInTcp());
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(ObservationTarget::kHand);
-  carry_.start(ctx, ctrl(), p.ready_pose, presentedUpAxis(ctx));
+  started_ = ctx.time;
+  carrying_ = false;
+  ctrl().setPoseTarget(p.ready_pose);
+  if (ctx.in.hand.valid) startCarry(ctx);
+}
+
+void HoldReady::startCarry(HandoverContext& ctx) {
+  // the receiver's hand stops at the object's side: half its widest
+  // horizontal extent, upright the way it is to be presented
+  const Vector3 up = presentedUpAxis(ctx);
+  double half_width = 0.0;
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(up[k]) < 0.5) half_width = std::max(half_width, 0.5 * io::extentAlong(ctx.object.shape, Vector3::Unit(k)));
+  constexpr double kUnknownShape = 0.01;  // m: still reached for, its size unknown
+  carry_.start(ctx, ctrl(), ctx.params->ready_pose, up, std::max(half_width, kUnknownShape));
+  carrying_ = true;
 }
 
 bool HoldReady::onRun(HandoverContext& ctx) {
+  if (!carrying_) {
+    if (!ctx.in.hand.valid && ctx.time - started_ < wait_for_person_) return false;
+    startCarry(ctx);
+  }
   carry_.update(ctx, ctrl());
   const bool settled = ctx.in.tcp_velocity.head<3>().norm() <= settle_speed_;
   // a receiver already reaching in holds the arm off its carry pose (the

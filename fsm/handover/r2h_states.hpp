@@ -12,7 +12,12 @@ namespace handover::fsm {
 /// Also ready where it stands once a collision row with the person has been
 /// engaged for blocked_time (s) (HandoverInput::person_constraint_engaged):
 /// a receiver already there holds the arm off the ready pose.
-/// Keys: position_tolerance (m), settle_speed (m/s), blocked_time (s; absent: never).
+/// The placement keeps the arm out of the receiver's way to the object
+/// (CarryRequest::receiver_stop): it is asked for once the person is seen,
+/// or after wait_for_person (s) without them (heading for the ready pose
+/// meanwhile).
+/// Keys: position_tolerance (m), settle_speed (m/s), blocked_time (s; absent: never),
+/// wait_for_person (s).
 class HoldReady : public HandoverState {
  public:
   HoldReady();
@@ -28,6 +33,10 @@ class HoldReady : public HandoverState {
   /// waits before it is ready where it is; negative = never
   double blocked_time_ = -1.0;
   double blocked_since_ = -1.0;
+  double wait_for_person_ = 0.2;  ///< s
+  double started_ = 0.0;          ///< s, when the state started
+  bool carrying_ = false;         ///< the carry (and its placement request) has started
+  void startCarry(HandoverContext& ctx);
   HeldObjectCarry carry_;  ///< the ready pose, or an upright placement of the object near it
 };
 

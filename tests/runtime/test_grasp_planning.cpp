@@ -128,7 +128,7 @@ TEST(GraspPlanning, UprightPlacementKeepsTheHeldObjectVertical) {
   GraspPlanning planning(panda(), bottleSettings(false));
   const control::Isometry object_in_tcp = bottleSettings(false).object_grasps[0].placement.inverse();
   const fsm::ArmPlacement p = planning.uprightPlacement(object_in_tcp, control::Vector3::UnitZ(),
-                                                        control::Vector3(0.35, 0.0, 0.45), readyConfiguration());
+                                                        control::Vector3(0.35, 0.0, 0.45), readyConfiguration(), 0.0);
   ASSERT_TRUE(p.found);
   const control::Isometry object = tcpPose(panda(), p.q) * object_in_tcp;
   EXPECT_GT(object.linear().col(2).z(), std::cos(10.0 * M_PI / 180.0));
@@ -291,5 +291,41 @@ TEST(GraspPlanning, KeepsWhatTheShippedCollisionRulesKeepFromThePerson) {
   EXPECT_NEAR(k.forearm.gripper, rule->margin + budget + rule->damper.s_dist, 1e-12);
   EXPECT_LT(k.forearm.gripper, k.forearm.arm);
 }
+TEST(GraspPlanning, AHeldObjectWaitsOutOfTheWayOfTheReceiverWhoWillReachForIt) {
+  // a receiver in front and to the right, their shoulder above the table; the
+  // object is to wait upright at the ready place, the person reaching for it
+  GraspPlanning planning(panda(), bottleSettings(false));
+  const control::Vector3 shoulder(0.88, -0.28, 0.69), place(0.44, 0.0, 0.40);
+  perception::PerceptionEstimate e = offered(0.2, control::Vector3(0.72, -0.18, 0.20));
+  e.human.upper_arm.translation() = shoulder;
+  e.object.holder = perception::ObjectHolder::Robot;
+  planning.update(e, readyConfiguration(), true);
+  const control::Isometry object_in_tcp = bottleSettings(false).object_grasps[0].placement.inverse();
+  const double stop = 0.03;  // the bottle's radius: their hand stops at its side
+  // their way to it, as far as their hand goes: the palm and the arm keep out, the fingers hold the object at its end
+  cg::ObstacleCapsule reach;
+  reach.a = shoulder;
+  reach.b = place + (shoulder - place).normalized() * (stop + GraspPlanningSettings{}.hand_radius);
+  reach.radius = GraspPlanningSettings{}.hand_radius;
+  reach.gripper_works_here = true;
+  auto crossing = [&](const fsm::ArmPlacement& p) {
+    cg::ChainPoses poses;
+    cg::chainPoses(panda(), p.q, poses);
+    return cg::workZoneClearance(panda(), poses, &reach, 1);
+  };
+  const fsm::ArmPlacement blind = planning.uprightPlacement(object_in_tcp, control::Vector3::UnitZ(), place,
+                                                            readyConfiguration(), 0.0);
+  const fsm::ArmPlacement aware = planning.uprightPlacement(object_in_tcp, control::Vector3::UnitZ(), place,
+                                                            readyConfiguration(), stop);
+  ASSERT_TRUE(blind.found);
+  ASSERT_TRUE(aware.found);
+  EXPECT_LT(crossing(blind), 0.0);  // without them the wrist waits across their way
+  EXPECT_GT(crossing(aware), 0.0);
+  // still upright at the place asked for
+  const control::Isometry object = tcpPose(panda(), aware.q) * object_in_tcp;
+  EXPECT_GT(object.linear().col(2).z(), std::cos(10.0 * M_PI / 180.0));
+  EXPECT_LT((object.translation() - place).norm(), 1e-3);
+}
+
 }  // namespace
 }  // namespace handover::runtime

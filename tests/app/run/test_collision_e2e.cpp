@@ -111,5 +111,23 @@ TEST(CollisionEndToEnd, FingersLeavingABallInTheReceiversHandKeepOffIt) {
   EXPECT_EQ(s.outcome, "success") << app::formatSummary(s);
 }
 
+// Receivers who reach out while the arm still carries the object to the
+// ready pose (from the benchmark): one past it to a point nearer the base
+// (r2h_reach_past_ready, at 1 m/s), one beside it with a feint first
+// (r2h_reach_beside_ready). The ball held from the side waited with the
+// wrist on their side of it, across their way, and their hand ran into it;
+// now the waiting place keeps the palm and the arm out of the way from their
+// shoulder to the object (GraspPlanning::uprightPlacement, receiver_stop).
+TEST(CollisionEndToEnd, AReceiverReachingForTheObjectDoesNotRunIntoTheWaitingArm) {
+  for (const char* file : {"tests/app/run/data/r2h_reach_past_ready.yaml", "tests/app/run/data/r2h_reach_beside_ready.yaml"}) {
+    testing::ScratchDir dir("collision_reach_ready");
+    const app::RunSummary s = runFile(dir, file);
+    EXPECT_EQ(s.human_contacts, 0) << file << "\n" << app::formatSummary(s);
+    EXPECT_EQ(s.penetration_time, 0.0) << file;
+    EXPECT_EQ(s.limit_violations.position + s.limit_violations.velocity + s.limit_violations.torque, 0) << file;
+    EXPECT_EQ(s.outcome, "success") << file << "\n" << app::formatSummary(s);
+  }
+}
+
 }  // namespace
 }  // namespace handover

@@ -30,13 +30,15 @@ struct FakePlanner : PlannerInterface {
   Isometry last_object_in_tcp = Isometry::Identity();
   Vector3 last_up_axis = Vector3::Zero();
   Vector3 last_position = Vector3::Zero();
+  double last_receiver_stop = -1.0;
   ArmPlacement answer;
   ArmPlacement uprightPlacement(const Isometry& object_in_tcp, const Vector3& up_axis, const Vector3& position,
-                                const Vector7&) override {
+                                const Vector7&, double receiver_stop) override {
     ++calls;
     last_object_in_tcp = object_in_tcp;
     last_up_axis = up_axis;
     last_position = position;
+    last_receiver_stop = receiver_stop;
     return answer;
   }
 };
@@ -293,6 +295,50 @@ TEST(PlannedTargets, AnEmptyGripperAlsoMovesInJointSpaceToTheNamedPoseWithItsTur
   EXPECT_TRUE(planner.last_up_axis.isApprox(handedUpAxis(Eigen::Matrix3d(safe.linear()))));
   EXPECT_FALSE(rig.ctl.pose_active);
   EXPECT_TRUE(rig.ctl.posture.isApprox(planner.answer.q));
+}
+
+TEST(PlannedTargets, AGiveAsksWhereToWaitOnceItSeesTheReceiverAndOutOfTheirWay) {
+  Rig rig(true);
+  rig.plan_stage = false;
+  FakePlanner planner;
+  rig.fsm->setPlanner(&planner);
+  rig.world.dropout = true;  // nobody seen yet
+  ASSERT_TRUE(rig.runUntilState("HoldReady", 1.0)) << rig.fsm->activePath();
+  rig.runFor(0.05);
+  const HandoverContext& ctx = rig.fsm->context();
+  // heading for the ready pose meanwhile, no placement asked for without the person it keeps clear of
+  EXPECT_FALSE(ctx.carry.pending());
+  EXPECT_TRUE(rig.ctl.pose_active);
+  EXPECT_TRUE(same(rig.ctl.pose, rig.fsm->params().ready_pose));
+  rig.world.dropout = false;
+  rig.step();
+  ASSERT_TRUE(ctx.carry.pending());
+  rig.fsm->plan();
+  EXPECT_EQ(planner.calls, 1);
+  EXPECT_GT(planner.last_receiver_stop, 0.0);  // a receiver will reach for it there
+}
+
+TEST(PlannedTargets, AGiveWhoseReceiverStaysUnseenStillAsksWhereToWait) {
+  Rig rig(true);
+  rig.plan_stage = false;
+  FakePlanner planner;
+  rig.fsm->setPlanner(&planner);
+  rig.world.dropout = true;
+  ASSERT_TRUE(rig.runUntilState("HoldReady", 1.0)) << rig.fsm->activePath();
+  ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->context().carry.pending(); }, 1.0));
+  rig.fsm->plan();
+  EXPECT_EQ(planner.calls, 1);
+}
+
+TEST(PlannedTargets, ATakesStowIsNotPlacedForAReceiver) {
+  Rig rig;
+  FakePlanner planner;
+  planner.answer = uprightAnswer();
+  rig.fsm->setPlanner(&planner);
+  rig.world.object_plan = sidePlan(2, 0.1);
+  takeUntilRetract(rig);
+  EXPECT_EQ(planner.calls, 1);
+  EXPECT_EQ(planner.last_receiver_stop, 0.0);
 }
 
 }  // namespace
