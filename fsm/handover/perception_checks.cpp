@@ -19,7 +19,16 @@ bool withdrawn(const HandoverContext& ctx, const SensedBody& body) {
   if (!body.valid) return false;  // a short dropout: keep the last decision
   // where its reach will end, when the approach anticipates it
   if (!p.workspace.contains((p.anticipate_reach ? restPose(body) : body.pose).translation())) return true;
-  return -speedToward(p.workspace.center, body) > p.withdraw_speed;
+  if (-speedToward(p.workspace.center, body) > p.withdraw_speed) return true;
+  // or back toward where it rested before the reach: away from the workspace
+  // centre or not, the person is taking it back
+  // heading there, not only drifting that way: a person who moves the hand
+  // on to where they settle (5-15 cm) was taken for one who withdraws
+  const bool hand = &body == &ctx.in.hand;
+  if (!(hand ? ctx.home_hand_known : ctx.home_object_known)) return false;
+  const double toward = speedToward(hand ? ctx.home_hand : ctx.home_object, body);
+  constexpr double kHeading = 0.866;  // cos 30 deg
+  return toward > p.withdraw_speed && toward >= kHeading * body.velocity.head<3>().norm();
 }
 
 bool pulledBack(const HandoverContext& ctx, double force) {

@@ -139,6 +139,22 @@ TEST(HandoverH2R, WithdrawDuringApproachRetreatsAndRetries) {
   EXPECT_EQ(rig.fsm->stats().handovers, 1);
 }
 
+// Withdrawing is going back to where the hand rested, whichever way that
+// lies from the robot: a hand resting beside the meeting point and going
+// back there moves along the robot's reach more than away from it (below
+// withdraw.speed that way), and the approach followed it home.
+TEST(HandoverH2R, AnOfferTakenBackToWhereItRestedIsAWithdrawal) {
+  const Vector3 rest(0.6, -0.35, 0.20);
+  Rig rig;
+  rig.world.hand = rig.world.hand_goal = rest;
+  rig.world.object = rest + rig.world.object_in_hand;  // where the object is first seen
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  rig.world.moveHand(rest, 0.4);
+  ASSERT_TRUE(rig.runUntilState("Retreat", 1.0)) << rig.fsm->activePath();
+  EXPECT_EQ(rig.fsm->stats().aborts, 1);
+}
+
 TEST(HandoverH2R, StaleDataDuringApproachCountsAsWithdrawal) {
   Rig rig;
   rig.world.moveHand(kMeet, 0.5);

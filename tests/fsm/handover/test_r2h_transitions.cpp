@@ -295,6 +295,23 @@ TEST(HandoverR2H, AReceiverAlreadyBesideTheArmEndsTheCarryWhereItStops) {
   EXPECT_EQ(rig.fsm->stats().outcome, std::string("running"));
 }
 
+// A receiver's hand going back to where it rested withdraws it, whichever
+// way that lies from the robot (here along the robot's reach more than away
+// from it, below withdraw.speed that way): the approach followed the hand of
+// a receiver who feinted back to its rest place and presented the object at
+// their chest.
+TEST(HandoverR2H, AHandGoingBackToWhereItRestedIsAWithdrawal) {
+  const Vector3 rest(0.6, -0.35, 0.25);
+  Rig rig(true);
+  rig.world.hand = rig.world.hand_goal = rest;
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+  rig.world.moveHand(kReceive, 0.5);
+  ASSERT_TRUE(rig.runUntilState("/Approach", 5.0)) << rig.fsm->activePath();
+  rig.world.moveHand(rest, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Retreat", 1.0)) << rig.fsm->activePath();
+  EXPECT_TRUE(rig.world.robot_grip);  // still holding the object
+}
+
 TEST(HandoverR2H, ACarryStuckWithNobodyNearStillTimesOut) {
   // held off the ready pose with the person far away: not a receiver's doing,
   // so HoldReady waits for its pose and ends by its timeout
