@@ -221,4 +221,40 @@ void BM_UprightPlacement(benchmark::State& state) {
 }
 BENCHMARK(BM_UprightPlacement)->Unit(benchmark::kMillisecond);
 
+// the give's wait at the ready pose, scored against a receiver: their forearm,
+// upper arm, a torso of two capsules, the head, the free arm and the reach
+// from the shoulder to the object's side (GraspPlanning::uprightPlacement)
+void BM_UprightPlacementForAReceiver(benchmark::State& state) {
+  const Model& model = pandaModel();
+  HeldObject held;
+  held.object_in_tcp.linear() = Eigen::AngleAxisd(-M_PI / 2, Vector3::UnitY()).toRotationMatrix();
+  const Vector3 shoulder(0.88, -0.28, 0.69), place(0.44, 0.0, 0.40);
+  auto capsule = [](const Vector3& a, const Vector3& b, double r) {
+    ObstacleCapsule c;
+    c.a = a;
+    c.b = b;
+    c.radius = r;
+    return c;
+  };
+  std::vector<ObstacleCapsule> person = {
+      capsule(Vector3(0.77, -0.45, 0.39), Vector3(0.73, -0.24, 0.20), 0.035),
+      capsule(shoulder, Vector3(0.77, -0.45, 0.39), 0.045),
+      capsule(Vector3(1.05, -0.09, 0.30), Vector3(1.05, -0.09, 0.57), 0.11),
+      capsule(Vector3(0.94, -0.21, 0.30), Vector3(0.94, -0.21, 0.57), 0.11),
+      capsule(Vector3(1.00, -0.15, 0.89), Vector3(1.00, -0.15, 0.89), 0.106),
+      capsule(Vector3(1.16, 0.02, 0.70), Vector3(1.16, 0.02, -0.11), 0.045),
+      capsule(shoulder, place + (shoulder - place).normalized() * 0.08, 0.05)};
+  person.back().gripper_works_here = true;
+  int solves = 0, calls = 0;
+  for (auto _ : state) {
+    const UprightPlacement p = findUprightPlacement(model, held, place, ready(), shippedConfig(), person.data(),
+                                                    static_cast<int>(person.size()));
+    solves += p.ik_solves;
+    ++calls;
+    benchmark::DoNotOptimize(p.q.data());
+  }
+  state.counters["ik_solves"] = static_cast<double>(solves) / calls;
+}
+BENCHMARK(BM_UprightPlacementForAReceiver)->Unit(benchmark::kMillisecond);
+
 }  // namespace
