@@ -118,7 +118,7 @@ void GraspPlanning::copyChoice(const cg::GraspChoice& c, fsm::TrackingPlan& plan
   plan.q_pre = c.q_pre_grasp;
 }
 
-int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool giving,
+int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool holding_hand,
                                    const control::Isometry* torso) {
   if (!human.valid || human.stale) return 0;
   auto capsule = [](const control::Isometry& X, double length, double radius) {
@@ -136,13 +136,14 @@ int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool 
   keep(obstacles_[0], settings_.keeps.forearm);
   obstacles_[1] = capsule(human.upper_arm, settings_.upper_arm_length, settings_.upper_arm_radius);
   keep(obstacles_[1], settings_.keeps.upper_arm);
-  // a give scores the presentation against the receiver's arm only (it comes to the object)
-  if (giving) return 2;
-  // the hand that holds the object: the fingers work in it, the palm and the arm keep clear
-  obstacles_[2] = capsule(human.hand, 0.0, settings_.hand_radius);
-  obstacles_[2].gripper_works_here = true;
-  keep(obstacles_[2], settings_.keeps.hand);
-  int n = 3;
+  int n = 2;
+  if (holding_hand) {
+    // the hand that holds the object: the fingers work in it, the palm and the arm keep clear
+    obstacles_[2] = capsule(human.hand, 0.0, settings_.hand_radius);
+    obstacles_[2].gripper_works_here = true;
+    keep(obstacles_[2], settings_.keeps.hand);
+    n = 3;
+  }
   if (torso == nullptr) return n;
   for (const cg::ObstacleCapsule& c : settings_.trunk) {
     cg::ObstacleCapsule& o = obstacles_[n++];
@@ -164,7 +165,7 @@ void GraspPlanning::update(const perception::PerceptionEstimate& est, const cont
   if (!robot_holds) {
     if (fresh_sample && est.object.valid && est.human.stamp != object_stamp_) {
       object_stamp_ = est.human.stamp;
-      const int n = personObstacles(est.human, false, torso);
+      const int n = personObstacles(est.human, true, torso);
       copyChoice(object_.update(est.object.pose, q, obstacles_.data(), n), object_plan_);
     }
     hand_plan_.valid = false;
@@ -172,7 +173,8 @@ void GraspPlanning::update(const perception::PerceptionEstimate& est, const cont
   }
   if (fresh_sample && est.human.stamp != hand_stamp_) {
     hand_stamp_ = est.human.stamp;
-    const int n = personObstacles(est.human, true, torso);  // the object goes into that hand
+    // the object goes into that hand; the presentation is scored against the receiver's arm only (it comes to the object)
+    const int n = personObstacles(est.human, false, nullptr);
     copyChoice(hand_.update(est.human.hand, q, obstacles_.data(), n), hand_plan_);
   }
   object_plan_.valid = false;
@@ -187,9 +189,8 @@ fsm::ArmPlacement GraspPlanning::uprightPlacement(const control::Isometry& objec
   held.up_axis = up_axis;
   int n = 0;
   if (receiver_stop > 0.0 && last_person_) {
-    n = personObstacles(*last_person_, false, last_torso_ ? &*last_torso_ : nullptr);
     // their hand now is not where it will be: it comes along the reach
-    obstacles_[2] = obstacles_[static_cast<std::size_t>(--n)];
+    n = personObstacles(*last_person_, false, last_torso_ ? &*last_torso_ : nullptr);
     const control::Vector3 shoulder = last_person_->upper_arm.translation();
     const control::Vector3 to_object = object_position - shoulder;
     const double length = to_object.norm() - receiver_stop - settings_.hand_radius;

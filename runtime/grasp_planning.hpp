@@ -109,9 +109,10 @@ class GraspPlanning : public fsm::PlannerInterface {
 
  private:
   static void copyChoice(const control::grasp::GraspChoice& c, fsm::TrackingPlan& plan);
-  /// Fills obstacles_ with the person's arm, and for a take (!giving) their
-  /// hand and trunk; returns their number.
-  int personObstacles(const perception::HumanEstimate& human, bool giving, const control::Isometry* torso);
+  /// Fills obstacles_ with the person's arm, their hand where it holds the
+  /// object (holding_hand: a take) and their trunk (torso given); returns
+  /// their number.
+  int personObstacles(const perception::HumanEstimate& human, bool holding_hand, const control::Isometry* torso);
 
   const control::Model& model_;
   GraspPlanningSettings settings_;

@@ -20,10 +20,9 @@ bool withdrawn(const HandoverContext& ctx, const SensedBody& body) {
   // where its reach will end, when the approach anticipates it
   if (!p.workspace.contains((p.anticipate_reach ? restPose(body) : body.pose).translation())) return true;
   if (-speedToward(p.workspace.center, body) > p.withdraw_speed) return true;
-  // or back toward where it rested before the reach: away from the workspace
-  // centre or not, the person is taking it back
-  // heading there, not only drifting that way: a person who moves the hand
-  // on to where they settle (5-15 cm) was taken for one who withdraws
+  // or heading back to where it rested before the reach, away from the
+  // workspace centre or not; heading there, not only drifting that way: a
+  // person who moves the hand on to where they settle was taken for one who withdraws
   const bool hand = &body == &ctx.in.hand;
   if (!(hand ? ctx.home_hand_known : ctx.home_object_known)) return false;
   const double toward = speedToward(hand ? ctx.home_hand : ctx.home_object, body);

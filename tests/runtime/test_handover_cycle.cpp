@@ -233,6 +233,13 @@ TEST(HandoverCycle, PlanAnswersTheCarryRequestTheStepPosted) {
     cycle.step(arm.time, arm, nobody);
   }
   ASSERT_TRUE(inHoldReady()) << cycle.machine().activePath();
+  // nobody in view: HoldReady heads for the ready pose and asks once it has
+  // waited its wait_for_person (config/fsm.yaml) for the receiver (no planning stage meanwhile)
+  EXPECT_FALSE(ctx.carry.pending());
+  for (; k < 500 && !ctx.carry.pending(); ++k) {
+    arm.time = k * 0.001;
+    cycle.step(arm.time, arm, nobody);
+  }
   // HoldReady asked in the step; the step did not search
   ASSERT_TRUE(ctx.carry.pending());
   const int id = ctx.carry.request().id;
