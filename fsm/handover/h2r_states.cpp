@@ -159,7 +159,7 @@ bool Approach::onRun(HandoverContext& ctx) {
     const double speed = (hand_ ? body.velocity : ctx.in.target_velocity).head<3>().norm();
     setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow, speed);
   }
-  if (withdrawn(ctx, body)) {
+  if (withdrawn(ctx, hand_)) {
     setOutput(withdrawn_);
     return true;
   }
@@ -252,7 +252,7 @@ bool Grasp::feelTouch(HandoverContext& ctx, const FingerFit& f) {
 
 bool Grasp::onRun(HandoverContext& ctx) {
   if (!closing_) {
-    if (withdrawn(ctx, ctx.in.object)) {
+    if (withdrawn(ctx, false)) {
       setOutput(withdrawn_);
       return true;
     }

@@ -13,8 +13,9 @@ double speedToward(const Vector3& center, const SensedBody& body) {
 
 bool fresh(const SensedBody& body, double max_age) { return body.valid && body.age <= max_age; }
 
-bool withdrawn(const HandoverContext& ctx, const SensedBody& body) {
+bool withdrawn(const HandoverContext& ctx, bool hand) {
   const HandoverParams& p = *ctx.params;
+  const SensedBody& body = hand ? ctx.in.hand : ctx.in.object;
   if (body.age > p.stale_timeout) return true;
   if (!body.valid) return false;  // a short dropout: keep the last decision
   // where its reach will end, when the approach anticipates it
@@ -23,7 +24,6 @@ bool withdrawn(const HandoverContext& ctx, const SensedBody& body) {
   // or heading back to where it rested before the reach, away from the
   // workspace centre or not; heading there, not only drifting that way: a
   // person who moves the hand on to where they settle was taken for one who withdraws
-  const bool hand = &body == &ctx.in.hand;
   if (!(hand ? ctx.home_hand_known : ctx.home_object_known)) return false;
   const double toward = speedToward(hand ? ctx.home_hand : ctx.home_object, body);
   constexpr double kHeading = 0.866;  // cos 30 deg

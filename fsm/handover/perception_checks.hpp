@@ -9,12 +9,13 @@ namespace handover::fsm {
 double speedToward(const Vector3& center, const SensedBody& body);
 /// A usable and recent sample.
 bool fresh(const SensedBody& body, double max_age);
-/// The person withdrew `body`: stale for longer than stale_timeout, outside
-/// the workspace, or moving away from it faster than withdraw_speed, or
+/// The person withdrew the receiver's hand (`hand`) or the offered object:
+/// stale for longer than stale_timeout, outside the workspace, or moving
+/// away from it faster than withdraw_speed, or
 /// heading back (within 30 degrees) toward where it rested before the reach
 /// (HandoverContext::home_*) that fast: a hand resting beside the meeting
 /// point goes back along the robot's reach more than away from it.
-bool withdrawn(const HandoverContext& ctx, const SensedBody& body);
+bool withdrawn(const HandoverContext& ctx, bool hand);
 /// The person pulls the object they share with the robot back where they
 /// brought it from: the wrist feels more than `force` (N) beyond the object's
 /// weight (HandoverContext::interaction) across the floor toward the place

@@ -107,7 +107,7 @@ bool Present::onRun(HandoverContext& ctx) {
   } else {
     pull_since_ = -1.0;
   }
-  if (withdrawn(ctx, ctx.in.hand)) {
+  if (withdrawn(ctx, true)) {
     setOutput(withdrawn_);
     return true;
   }
