@@ -98,6 +98,9 @@ GraspSelectionConfig graspSelectionConfigFrom(const YamlReader& root) {
   if (auto r = root.optionalChild("cold_solves_per_update")) {
     c.cold_solves_per_update = static_cast<int>(r->checkRange(r->asInt(), 0, 100000));
   }
+  if (auto r = root.optionalChild("branch_solves_per_update")) {
+    c.branch_solves_per_update = static_cast<int>(r->checkRange(r->asInt(), 0, 100000));
+  }
   if (auto r = root.optionalChild("upright")) c.upright = readUpright(*r);
   if (auto r = root.optionalChild("presentation_tilt_deg")) c.presentation_tilt = r->checkRange(r->asDouble(), 0.0, 60.0) * kDeg;
   root.finish();

@@ -40,6 +40,13 @@ struct GraspSelectionConfig {
   /// candidate in every update. While no candidate has a solution yet, all
   /// seeds are tried regardless.
   int cold_solves_per_update = 2;
+  /// Warm candidates (solved from their previous solution, so on the IK branch
+  /// they were first found on) also solved from the current configuration, the
+  /// better-scoring solution kept: the arm may since have moved onto another
+  /// branch (a give's wrist turned the other way to wait), from which a
+  /// candidate the old branch reaches badly is a short move. Per update,
+  /// round-robin; 0 = every warm candidate in every update.
+  int branch_solves_per_update = 2;
   UprightOptions upright;
   /// rad: besides upright, a give may present the object tilted this far
   /// (about a horizontal axis through its centre, in any direction): people

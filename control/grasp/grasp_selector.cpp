@@ -13,6 +13,7 @@ GraspSelector::GraspSelector(const Model& model, const std::vector<GraspSpec>& s
   evaluations_.resize(candidates_.size());
   for (const GraspCandidate& c : candidates_) preference_.push_back(specs[static_cast<std::size_t>(c.spec)].preference);
   warm_.assign(candidates_.size(), false);
+  solved_warm_.assign(candidates_.size(), false);
   next_seed_.assign(candidates_.size(), 0);
   seeds_.reserve(config.seeds.size() + 1);
   seeds_.push_back(Vector7::Zero());
@@ -25,6 +26,7 @@ void GraspSelector::reset() {
   for (CandidateEvaluation& e : evaluations_) e = CandidateEvaluation();
   choice_ = GraspChoice();
   cold_cursor_ = 0;
+  branch_cursor_ = 0;
 }
 
 bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, const Vector7& seed,
@@ -99,6 +101,23 @@ void GraspSelector::evaluate(int k, const Isometry& X_obj, const Vector7& q_now,
   addPreference(k);
 }
 
+void GraspSelector::tryCurrentBranch(int k, const Vector7& q_now, const ObstacleCapsule* obstacles,
+                                     int num_obstacles) {
+  CandidateEvaluation& e = evaluations_[k];
+  CandidateEvaluation trial;
+  const bool ok = solvePair(e.grasp, e.pre_grasp, q_now, q_now, obstacles, num_obstacles, trial);
+  e.iterations += trial.iterations;
+  if (!ok) return;
+  trial.score.preference = preference_[static_cast<std::size_t>(k)];
+  trial.score.total += trial.score.preference;
+  if (e.feasible && trial.score.total <= e.score.total) return;
+  e.feasible = true;
+  e.q_grasp = trial.q_grasp;
+  e.q_pre_grasp = trial.q_pre_grasp;
+  e.score = trial.score;
+  warm_[k] = true;
+}
+
 void GraspSelector::addPreference(int k) {
   CandidateEvaluation& e = evaluations_[k];
   if (!e.feasible) return;
@@ -120,11 +139,14 @@ const GraspChoice& GraspSelector::update(const Isometry& X_obj, const Vector7& q
   // at most `cold_solves_per_update` of them.
   const bool any_warm = std::find(warm_.begin(), warm_.end(), true) != warm_.end();
   const bool all_seeds = !any_warm || config_.cold_solves_per_update == 0;
-  int cold_done = 0, last_cold = -1;
+  const int branch_budget = config_.branch_solves_per_update > 0 ? config_.branch_solves_per_update : n;
+  int cold_done = 0, last_cold = -1, branch_done = 0, last_branch = -1;
   for (int i = 0; i < n; ++i) {
     const int k = (cold_cursor_ + i) % n;
+    solved_warm_[k] = false;
     if (warm_[k]) {
       evaluate(k, X_obj, q_now, obstacles, num_obstacles, Start::kWarm);
+      solved_warm_[k] = warm_[k];
       if (warm_[k]) continue;  // a failed warm solve falls through to a cold one
     }
     if (all_seeds) {
@@ -141,6 +163,15 @@ const GraspChoice& GraspSelector::update(const Isometry& X_obj, const Vector7& q
   }
   // the next update's cold solves start after the last one of this update
   if (last_cold >= 0) cold_cursor_ = (last_cold + 1) % n;
+  // the branch the arm is on now, for candidates solved warm on another one
+  for (int i = 0; i < n && branch_done < branch_budget; ++i) {
+    const int k = (branch_cursor_ + i) % n;
+    if (!solved_warm_[k]) continue;
+    tryCurrentBranch(k, q_now, obstacles, num_obstacles);
+    ++branch_done;
+    last_branch = k;
+  }
+  if (last_branch >= 0) branch_cursor_ = (last_branch + 1) % n;
 
   // best feasible candidate; the current one keeps its place unless beaten by the margin
   int best = -1;

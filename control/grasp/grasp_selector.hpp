@@ -10,7 +10,10 @@
 // warm solve failed) is solved from the current q and every fixed seed on the
 // first update, keeping the best-scoring solution; later, such candidates get
 // one seed each, round-robin, at most `cold_solves_per_update` solves per
-// update, so candidates that stay out of reach cost little. The chosen
+// update, so candidates that stay out of reach cost little. A warm candidate
+// is also solved from the current q (`branch_solves_per_update`, the better
+// solution kept): a warm start keeps the IK branch a candidate was first found
+// on, and the arm may have moved onto another. The chosen
 // configuration is meant as the posture task's reference (redundancy
 // resolution).
 //
@@ -81,6 +84,7 @@ class GraspSelector {
   enum class Start { kWarm, kNextSeed, kAllSeeds };
   void evaluate(int k, const Isometry& X_obj, const Vector7& q_now, const ObstacleCapsule* obstacles,
                 int num_obstacles, Start start);
+  void tryCurrentBranch(int k, const Vector7& q_now, const ObstacleCapsule* obstacles, int num_obstacles);
   void addPreference(int k);
   bool solvePair(const Isometry& grasp, const Isometry& pre_grasp, const Vector7& seed, const Vector7& q_now,
                  const ObstacleCapsule* obstacles, int num_obstacles, CandidateEvaluation& out);
@@ -92,9 +96,11 @@ class GraspSelector {
   std::vector<CandidateEvaluation> evaluations_;
   std::vector<double> preference_;  ///< candidate k's spec's preference (score units)
   std::vector<bool> warm_;      ///< candidate k has a converged solution to start from
+  std::vector<bool> solved_warm_;  ///< candidate k was solved from its warm start in this update
   std::vector<int> next_seed_;  ///< candidate k's next cold seed (index into seeds_)
   std::vector<Vector7> seeds_;  ///< [q_now, fixed seeds...], slot 0 rewritten each update
   int cold_cursor_ = 0;         ///< round-robin start of the cold budget
+  int branch_cursor_ = 0;       ///< round-robin start of the branch budget
   bool hold_ = false;
   GraspChoice choice_;
 };

@@ -48,6 +48,7 @@ score: {joint_margin: 3.0, margin_ref: 0.4, motion: 0.0}
 hysteresis: 0.3
 table: {height: 0.1, clearance: 0.05}
 cold_solves_per_update: 5
+branch_solves_per_update: 0
 upright: {yaw_step_deg: 20, tilt_tolerance_deg: 5, position_offsets: [[0, 0, 0], [0, 0, 0.1]]}
 presentation_tilt_deg: 20
 )");
@@ -68,6 +69,7 @@ presentation_tilt_deg: 20
   EXPECT_DOUBLE_EQ(c.table_height, 0.1);
   EXPECT_DOUBLE_EQ(c.table_clearance, 0.05);
   EXPECT_EQ(c.cold_solves_per_update, 5);
+  EXPECT_EQ(c.branch_solves_per_update, 0);
   EXPECT_NEAR(c.upright.tilt_tolerance, 5.0 * M_PI / 180.0, 1e-12);
   ASSERT_EQ(c.upright.position_offsets.size(), 2u);
   EXPECT_DOUBLE_EQ(c.upright.position_offsets[1].z(), 0.1);
@@ -83,6 +85,7 @@ TEST(GraspSelectionConfig, RejectsBadInputNamingFileAndKey) {
   EXPECT_NE(errorOf("ik: {seeds: [[0, 0, 0]]}\n").find("ik.seeds"), std::string::npos);
   EXPECT_NE(errorOf("hysteresis: lots\n").find("hysteresis"), std::string::npos);
   EXPECT_NE(errorOf("upright: {position_offsets: []}\n").find("position_offsets"), std::string::npos);
+  EXPECT_NE(errorOf("branch_solves_per_update: -1\n").find("branch_solves_per_update"), std::string::npos);
   EXPECT_NE(errorOf("presentation_tilt_deg: 90\n").find("presentation_tilt_deg"), std::string::npos);
 }
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "control/grasp/chain_kinematics.hpp"
 #include "control/grasp/grasp_selector.hpp"
@@ -365,6 +366,44 @@ TEST(GraspSelector, WarmUpdatesTrackAMovingObject) {
   }
   // warm starts are what makes the sensor rate affordable
   EXPECT_LT(warm_iterations / 59.0, 0.25 * cold_iterations);
+}
+
+TEST(GraspSelector, AWarmCandidateFollowsTheArmOntoAnotherIkBranch) {
+  // A give's presentation (g1_00122): the plan was found while the arm stood
+  // one way; the arm then waited in another configuration from which the
+  // same grasp is a short move. Solved only from its previous solution, the
+  // candidate kept the first one and asked the approach for a 3.9 rad turn of
+  // the wrist, which it never made. Here: one grasp pose, two of its IK
+  // solutions far apart in joint space, the arm first at one, then at the other.
+  const Model& model = testing::panda();
+  const GraspSelectionConfig& config = testing::shippedConfig();
+  const Vector7 q_first = (Vector7() << -0.24, -0.33, 0.02, -2.33, 0.89, 2.07, 2.24).finished();
+  const Isometry target = tcpPose(model, q_first);
+  Vector7 q_other = q_first;
+  bool found = false;
+  std::mt19937 rng(7);
+  for (int k = 0; k < 500 && !found; ++k) {
+    const IkResult r = solveIk(model, model.frameId(config.frame), target, testing::randomConfiguration(model, rng, 0.2), config.ik);
+    if (r.converged && (r.q - q_first).norm() > 2.5 && smallestLimitDistance(model, r.q) > 0.5) {
+      q_other = r.q;
+      found = true;
+    }
+  }
+  ASSERT_TRUE(found) << "no second IK solution for the test pose";
+
+  GraspSpec at_tcp;  // the grasp frame is the object's frame
+  GraspSelectionConfig no_twin = config;
+  no_twin.candidates.parallel_gripper_twin = false;
+  GraspSelector selector(model, {at_tcp}, no_twin);
+  ASSERT_TRUE(selector.update(target, q_first).valid);
+  EXPECT_LT((selector.choice().q_grasp - q_first).norm(), 0.3);
+  // the arm is now at the other solution: the plan follows it there
+  for (int k = 0; k < 5; ++k) ASSERT_TRUE(selector.update(target, q_other).valid);
+  EXPECT_LT((selector.choice().q_grasp - q_other).norm(), 0.3)
+      << "still " << selector.choice().q_grasp.transpose() << ", the arm at " << q_other.transpose();
+  const Isometry reached = tcpPose(model, selector.choice().q_grasp);
+  EXPECT_LT((reached.translation() - target.translation()).norm(), 1e-3);
+  EXPECT_LT(rotationAngle(reached.linear(), target.linear()), 0.5 * kDeg);
 }
 
 }  // namespace
