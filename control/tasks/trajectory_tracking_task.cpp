@@ -97,7 +97,10 @@ void TrajectoryTrackingTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen
 Vector3 turnError(const Vector3& e, const Vector3& plan_turn, bool& long_way) {
   const double theta = e.norm();
   const double plan = plan_turn.norm();
-  if (theta < 0.5 * M_PI || plan < 1e-9) {
+  // the long way only where it can be the plan's: beyond a quarter turn, or when the joints'
+  // motion toward the plan turns the TCP more than half a turn, which no shortest rotation does
+  // (a wrist at the far end of its range reaching round: g31_00157)
+  if (theta < 1e-9 || plan < 1e-9 || (theta < 0.5 * M_PI && plan <= M_PI)) {
     long_way = false;
     return e;
   }

@@ -88,7 +88,9 @@ class TrajectoryTrackingTask : public Task {
 /// The orientation error the PD acts on (rad, world axes). `e`: the shortest
 /// one (norm theta <= pi; the PD turns by -e). `plan_turn`: the TCP's angular
 /// displacement the joints' motion toward the plan gives to first order,
-/// J_w (q_plan - q). Beyond a quarter turn, when the plan turns the other way
+/// J_w (q_plan - q). Beyond a quarter turn, or when the plan turns the TCP
+/// more than half a turn (no shortest rotation does: a wrist at the far end
+/// of its range reaching round), when the plan turns the other way
 /// (plan_turn . e clearly > 0), the error becomes the long way round,
 /// e - 2 pi e / theta (norm 2 pi - theta), so the tracking turns with the
 /// joints instead of against them. `long_way` keeps the choice until the

@@ -366,9 +366,15 @@ TEST(TurnError, GoesTheLongWayOnlyWhenThePlanTurnsThatWay) {
   EXPECT_EQ(turnError(e, Vector3(1.0, 0.0, 0.0), long_way), l);
   EXPECT_EQ(turnError(e, Vector3(0.0, 0.0, -1.0), long_way), e);
   EXPECT_FALSE(long_way);
-  // below a quarter turn the short way always
+  // below a quarter turn the short way, unless the plan turns more than half a turn (no
+  // shortest rotation does) the other way
   EXPECT_EQ(turnError(Vector3(0.0, 0.0, 1.2), Vector3(0.0, 0.0, 3.0), long_way), Vector3(0.0, 0.0, 1.2));
   EXPECT_FALSE(long_way);
+  EXPECT_EQ(turnError(Vector3(0.0, 0.0, 1.2), Vector3(0.0, 0.0, -4.5), long_way), Vector3(0.0, 0.0, 1.2));
+  EXPECT_FALSE(long_way);
+  const Vector3 far = turnError(Vector3(0.0, 0.0, 1.2), Vector3(0.0, 0.0, 4.5), long_way);
+  EXPECT_TRUE(long_way);
+  EXPECT_NEAR(far.z(), -(2.0 * M_PI - 1.2), 1e-12);
 }
 
 namespace {
@@ -441,4 +447,23 @@ TEST(TrajectoryTrackingTask, ALargeTurnGoesTheWayTheJointPlanTurns) {
   EXPECT_LT(without.wrist_margin, 0.1);
   EXPECT_GT(without.position_left, 0.05);
   EXPECT_GT(without.joints_off_plan, 1.0);
+}
+
+// Less than a quarter turn by the shortest rotation, but the wrist is at the
+// far end of its range: the plan turns q7 by -4.8 rad (2.3 -> -2.5), the
+// shortest rotation (1.5 rad) would take it to 3.8, past its limit. A give's
+// approach from its waiting pose (g31_00157, g1_00122): joint 7 stopped at
+// its limit, joint 1 swung the arm 2.3 rad aside to make up the turn and the
+// approach timed out. The joints' motion toward the plan turns the TCP more
+// than half a turn, which no shortest rotation does: the way is the plan's.
+TEST(TrajectoryTrackingTask, ASmallTurnGoesTheLongWayWhenTheJointPlanTurnsMoreThanHalfATurn) {
+  Vector7 q0;
+  q0 << 0.0, -0.3, 0.0, -2.2, 0.0, 2.0, 2.3;
+  Vector7 q_plan = q0;
+  q_plan[6] = 2.3 - (2.0 * M_PI - 1.5);
+  const Turn with = turnToward(q0, q_plan, true);
+  EXPECT_LT(with.orientation_left, 0.01);
+  EXPECT_LT(with.position_left, 0.005);
+  EXPECT_LT(with.joints_off_plan, 0.05);
+  EXPECT_GT(with.wrist_margin, 0.2);
 }
