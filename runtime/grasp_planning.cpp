@@ -203,11 +203,8 @@ fsm::ArmPlacement GraspPlanning::uprightPlacement(const control::Isometry& objec
       reach.gripper_works_here = true;  // the fingers hold the object where it ends; the palm and the arm keep out
     }
   }
-  // a receiver's presentation already planned: the arm waits on its way there (the plan's IK
-  // branch), not where the approach must wind the wrist round to reach it
-  const control::Vector7* q_next = receiver_stop > 0.0 && hand_plan_.valid ? &hand_plan_.q_target : nullptr;
   const cg::UprightPlacement p =
-      cg::findUprightPlacement(model_, held, object_position, q_now, settings_.config, obstacles_.data(), n, q_next);
+      cg::findUprightPlacement(model_, held, object_position, q_now, settings_.config, obstacles_.data(), n);
   fsm::ArmPlacement out;
   out.found = p.found;
   out.tcp = p.tcp;

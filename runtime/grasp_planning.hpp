@@ -102,9 +102,7 @@ class GraspPlanning : public fsm::PlannerInterface {
   /// last seen (arm, trunk) and against their reach to it: a capsule of the
   /// hand's radius from their shoulder to where the hand stops, receiver_stop
   /// short of the object's centre, so the arm waits beside or behind the
-  /// object as seen from them, not across their way to it; and, once their
-  /// hand's presentation is planned, as a stop on the arm's way to it
-  /// (findUprightPlacement's q_next).
+  /// object as seen from them, not across their way to it.
   fsm::ArmPlacement uprightPlacement(const control::Isometry& object_in_tcp, const control::Vector3& up_axis,
                                      const control::Vector3& object_position, const control::Vector7& q_now,
                                      double receiver_stop) override;

@@ -223,9 +223,8 @@ BENCHMARK(BM_UprightPlacement)->Unit(benchmark::kMillisecond);
 
 // the give's wait at the ready pose, scored against a receiver: their forearm,
 // upper arm, a torso of two capsules, the head, the free arm and the reach
-// from the shoulder to the object's side (GraspPlanning::uprightPlacement);
-// on_the_way: their presentation planned, the wait a stop on the way to it
-void runUprightPlacementForAReceiver(benchmark::State& state, bool on_the_way) {
+// from the shoulder to the object's side (GraspPlanning::uprightPlacement)
+void BM_UprightPlacementForAReceiver(benchmark::State& state) {
   const Model& model = pandaModel();
   HeldObject held;
   held.object_in_tcp.linear() = Eigen::AngleAxisd(-M_PI / 2, Vector3::UnitY()).toRotationMatrix();
@@ -246,20 +245,16 @@ void runUprightPlacementForAReceiver(benchmark::State& state, bool on_the_way) {
       capsule(Vector3(1.16, 0.02, 0.70), Vector3(1.16, 0.02, -0.11), 0.045),
       capsule(shoulder, place + (shoulder - place).normalized() * 0.08, 0.05)};
   person.back().gripper_works_here = true;
-  const Vector7 presentation = (Vector7() << 0.02, 0.11, 0.19, -1.56, -0.49, 2.34, -1.67).finished();
   int solves = 0, calls = 0;
   for (auto _ : state) {
     const UprightPlacement p = findUprightPlacement(model, held, place, ready(), shippedConfig(), person.data(),
-                                                    static_cast<int>(person.size()), on_the_way ? &presentation : nullptr);
+                                                    static_cast<int>(person.size()));
     solves += p.ik_solves;
     ++calls;
     benchmark::DoNotOptimize(p.q.data());
   }
   state.counters["ik_solves"] = static_cast<double>(solves) / calls;
 }
-void BM_UprightPlacementForAReceiver(benchmark::State& state) { runUprightPlacementForAReceiver(state, false); }
 BENCHMARK(BM_UprightPlacementForAReceiver)->Unit(benchmark::kMillisecond);
-void BM_UprightPlacementOnTheWayToAPresentation(benchmark::State& state) { runUprightPlacementForAReceiver(state, true); }
-BENCHMARK(BM_UprightPlacementOnTheWayToAPresentation)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -16,7 +16,7 @@ Isometry uprightObjectPose(const Vector3& up_axis, double yaw, const Vector3& po
 
 UprightPlacement findUprightPlacement(const Model& model, const HeldObject& held, const Vector3& position,
                                       const Vector7& q_now, const GraspSelectionConfig& config,
-                                      const ObstacleCapsule* obstacles, int num_obstacles, const Vector7* q_next) {
+                                      const ObstacleCapsule* obstacles, int num_obstacles) {
   UprightPlacement best;
   const int frame = model.frameId(config.frame);
   const Isometry tcp_in_object = held.object_in_tcp.inverse();
@@ -29,10 +29,9 @@ UprightPlacement findUprightPlacement(const Model& model, const HeldObject& held
       const double yaw = 2.0 * M_PI * k / turns;
       const Isometry X_obj = uprightObjectPose(up, yaw, position + offset);
       const Isometry X_tcp = X_obj * tcp_in_object;
-      // where the arm goes next, the current configuration, then the fixed seeds
-      for (int s = q_next != nullptr ? -2 : -1; s < static_cast<int>(config.seeds.size()); ++s) {
-        const Vector7& seed = s == -2 ? *q_next : s == -1 ? q_now : config.seeds[static_cast<std::size_t>(s)];
-        const IkResult r = solveIk(model, frame, X_tcp, seed, config.ik);
+      // the current configuration first, then the fixed seeds
+      for (int s = -1; s < static_cast<int>(config.seeds.size()); ++s) {
+        const IkResult r = solveIk(model, frame, X_tcp, s < 0 ? q_now : config.seeds[s], config.ik);
         ++best.ik_solves;
         if (!r.converged) continue;
         chainPoses(model, r.q, poses);
@@ -40,18 +39,9 @@ UprightPlacement findUprightPlacement(const Model& model, const HeldObject& held
         const Vector3 up_world = (chainFramePose(model, poses, frame) * held.object_in_tcp).linear() * up;
         const double tilt = std::acos(std::clamp(up_world.z(), -1.0, 1.0));
         if (tilt > o.tilt_tolerance) continue;
-        ScoreTerms t = scoreConfiguration(model, frame, poses, r.q, q_now, obstacles, num_obstacles, config.score);
-        if (q_next != nullptr) {  // and on from here
-          t.motion += (*q_next - r.q).norm() / config.score.motion_ref;
-          t.total = totalScore(t, config.score);
-        }
-        // out of where the fingers work (a receiver's reach to the object) before any score: the
-        // path to the next configuration weighed against it put the wrist across their way
-        const bool clear = workZoneClearance(model, poses, obstacles, num_obstacles) >= 0.0;
-        if (best.found && (clear < best.clear_of_work_zones || (clear == best.clear_of_work_zones && t.total <= best.score.total)))
-          continue;
+        const ScoreTerms t = scoreConfiguration(model, frame, poses, r.q, q_now, obstacles, num_obstacles, config.score);
+        if (best.found && t.total <= best.score.total) continue;
         best.found = true;
-        best.clear_of_work_zones = clear;
         best.q = r.q;
         best.tcp = X_tcp;
         best.object = X_obj;

@@ -35,10 +35,6 @@ struct UprightPlacement {
   double tilt = 0.0;                            ///< rad, angle between the object's up axis and world z at q
   Vector3 offset = Vector3::Zero();             ///< m, position offset used (0 = the nominal position)
   ScoreTerms score;
-  /// The palm and the arm outside the obstacles where the fingers work
-  /// (workZoneClearance >= 0: a receiver's reach to the object); a placement
-  /// that is wins over any that is not, whatever their scores.
-  bool clear_of_work_zones = true;
   int ik_solves = 0;                            ///< cost of the search
 };
 
@@ -48,14 +44,9 @@ Isometry uprightObjectPose(const Vector3& up_axis, double yaw, const Vector3& po
 /// Searches an upright placement of `held` near `position` (world, m) for the
 /// arm at q_now (rad). `config` gives the frame, IK options and seeds, score
 /// weights and the upright options; optional obstacle capsules (world, e.g.
-/// the receiver's arm) enter the score's clearance term. With `q_next` (rad,
-/// where the arm goes from the placement, e.g. a give's presentation plan)
-/// the placement is a stop on the way: the motion term is the joint path
-/// q_now -> q -> q_next, and q_next is the first IK seed. A placement clear
-/// of the obstacles where the fingers work wins over one that is not.
+/// the receiver's arm) enter the score's clearance term.
 UprightPlacement findUprightPlacement(const Model& model, const HeldObject& held, const Vector3& position,
                                       const Vector7& q_now, const GraspSelectionConfig& config,
-                                      const ObstacleCapsule* obstacles = nullptr, int num_obstacles = 0,
-                                      const Vector7* q_next = nullptr);
+                                      const ObstacleCapsule* obstacles = nullptr, int num_obstacles = 0);
 
 }  // namespace handover::control::grasp
