@@ -110,12 +110,10 @@ void GraspSelector::tryCurrentBranch(int k, const Vector7& q_now, const Obstacle
   if (!ok) return;
   trial.score.preference = preference_[static_cast<std::size_t>(k)];
   trial.score.total += trial.score.preference;
-  if (e.feasible && trial.score.total <= e.score.total) return;
-  e.feasible = true;
+  if (trial.score.total <= e.score.total) return;  // e is feasible: solved warm in this update
   e.q_grasp = trial.q_grasp;
   e.q_pre_grasp = trial.q_pre_grasp;
   e.score = trial.score;
-  warm_[k] = true;
 }
 
 void GraspSelector::addPreference(int k) {

@@ -84,6 +84,7 @@ class GraspSelector {
   enum class Start { kWarm, kNextSeed, kAllSeeds };
   void evaluate(int k, const Isometry& X_obj, const Vector7& q_now, const ObstacleCapsule* obstacles,
                 int num_obstacles, Start start);
+  /// Candidate k (solved warm in this update) from q_now too; keeps the better solution.
   void tryCurrentBranch(int k, const Vector7& q_now, const ObstacleCapsule* obstacles, int num_obstacles);
   void addPreference(int k);
   bool solvePair(const Isometry& grasp, const Isometry& pre_grasp, const Vector7& seed, const Vector7& q_now,
