@@ -452,7 +452,7 @@ TEST(TrajectoryTrackingTask, ALargeTurnGoesTheWayTheJointPlanTurns) {
 // Less than a quarter turn by the shortest rotation, but the wrist is at the
 // far end of its range: the plan turns q7 by -4.8 rad (2.3 -> -2.5), the
 // shortest rotation (1.5 rad) would take it to 3.8, past its limit. A give's
-// approach from its waiting pose (g31_00157, g1_00122): joint 7 stopped at
+// approach from its waiting pose (g31_00157): joint 7 stopped at
 // its limit, joint 1 swung the arm 2.3 rad aside to make up the turn and the
 // approach timed out. The joints' motion toward the plan turns the TCP more
 // than half a turn, which no shortest rotation does: the way is the plan's.
