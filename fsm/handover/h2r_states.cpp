@@ -63,7 +63,7 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   // was tried: the noisy velocity of a person standing still started 33 of 300 approaches
   // that ended withdrawn at once, a retry lost each.)
   const Vector3 pos = (p.anticipate_reach ? restPose(body) : body.pose).translation();
-  const bool usable = fresh(body, p.max_data_age) && p.workspace.contains(pos) && (!hand_ || ctx.in.hand_open);
+  const bool usable = fresh(body, p.max_data_age) && inWorkspace(ctx, hand_) && (!hand_ || ctx.in.hand_open);
   if (!usable) {
     settled_since_ = -1.0;
     return false;

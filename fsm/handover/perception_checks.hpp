@@ -9,8 +9,15 @@ namespace handover::fsm {
 double speedToward(const Vector3& center, const SensedBody& body);
 /// A usable and recent sample.
 bool fresh(const SensedBody& body, double max_age);
+/// The receiver's hand (`hand`) or the offered object is in the meeting
+/// region (HandoverParams::workspace), at its rest pose when the approach
+/// anticipates the reach. An offered object also counts while the hand that
+/// holds it is there: the handover location is the person's grip point (the
+/// scenario contract bounds that point by the region), and the object they
+/// hold out reaches beyond it by up to its own size.
+bool inWorkspace(const HandoverContext& ctx, bool hand);
 /// The person withdrew the receiver's hand (`hand`) or the offered object:
-/// stale for longer than stale_timeout, outside the workspace, or moving
+/// stale for longer than stale_timeout, outside the workspace (inWorkspace), or moving
 /// away from it faster than withdraw_speed, or
 /// heading back (within 30 degrees) toward where it rested before the reach
 /// (HandoverContext::home_*) that fast: a hand resting beside the meeting

@@ -155,6 +155,25 @@ TEST(HandoverH2R, AnOfferTakenBackToWhereItRestedIsAWithdrawal) {
   EXPECT_EQ(rig.fsm->stats().aborts, 1);
 }
 
+// The handover location is the person's grip point: an object held out
+// beyond the meeting region's edge by a hand inside it is an offer (the
+// benchmark's g1_00045: a box 2 mm past y = 0.60, the robot waited until the
+// person gave up); with the hand outside too it is not.
+TEST(HandoverH2R, AnObjectHeldOutPastTheWorkspaceEdgeByAHandInsideItIsOffered) {
+  const auto offer = [](double hand_y) {
+    Rig rig;
+    const HandoverParams& p = rig.fsm->params();
+    rig.world.object_in_hand = Vector3(0, 0.04, 0.05);
+    const Vector3 edge(0.45, p.workspace.box_max.y() + hand_y, 0.30);  // within reach_radius, at rest
+    rig.world.hand = rig.world.hand_goal = edge;
+    rig.world.object = edge + rig.world.object_in_hand;
+    EXPECT_FALSE(p.workspace.contains(rig.world.object));
+    return rig.runUntilState("Approach", 3.0);
+  };
+  EXPECT_TRUE(offer(-0.02));  // the hand 2 cm inside, the object 2 cm outside
+  EXPECT_FALSE(offer(0.02));  // both outside: nobody offers anything here
+}
+
 TEST(HandoverH2R, StaleDataDuringApproachCountsAsWithdrawal) {
   Rig rig;
   rig.world.moveHand(kMeet, 0.5);
