@@ -70,7 +70,8 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   cs.object.com_in_tcp = sc.object.grasp.inverse().translation();
   cs.object.shape = scenario::primitiveShapeOf(sc.object);
   cs.object_grasp = graspOffsetFor(sc.object);
-  cs.object_grasps = graspSpecsFor(sc.object, cs.grasp_selection.declared_preference, cs.gripper_open_width);
+  cs.object_grasps = graspSpecsFor(sc.object, cs.grasp_selection.declared_preference, cs.gripper_open_width,
+                                   cs.grasp_selection.palm);
   cs.collision.object = collisionShapeFor(sc.object);
   human::ScriptedHuman person(sc);
   const scenario::BodyDimensions body = person.body();

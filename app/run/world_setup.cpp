@@ -60,7 +60,7 @@ control::ObjectShapeSettings collisionShapeFor(const scenario::ObjectSpec& obj) 
 }
 
 std::vector<control::grasp::GraspSpec> graspSpecsFor(const scenario::ObjectSpec& obj, double declared_preference,
-                                                     double gripper_opening) {
+                                                     double gripper_opening, const control::grasp::PalmGeometry& palm) {
   namespace cg = control::grasp;
   auto declared = [&](const Eigen::Isometry3d& grasp, int free_axis) {
     cg::GraspSpec s;
@@ -70,12 +70,14 @@ std::vector<control::grasp::GraspSpec> graspSpecsFor(const scenario::ObjectSpec&
     s.preference = declared_preference;
     return s;
   };
-  std::vector<cg::GraspSpec> specs{declared(obj.grasp, obj.free_axis)};
-  for (const scenario::ObjectSpec::ExtraGrasp& g : obj.grasps) specs.push_back(declared(g.grasp, g.free_axis));
-  // and every family the shape allows (a person may hold it anywhere)
   const cg::PrimitiveShape shape = obj.shape == scenario::Shape::Box        ? cg::PrimitiveShape::kBox
                                    : obj.shape == scenario::Shape::Sphere ? cg::PrimitiveShape::kSphere
                                                                           : cg::PrimitiveShape::kCylinder;
+  // a declared grasp deeper than the palm lets the fingers go is taken as deep as it does
+  const auto fitted = [&](const Eigen::Isometry3d& grasp) { return cg::fitToPalm(shape, obj.size, grasp, palm); };
+  std::vector<cg::GraspSpec> specs{declared(fitted(obj.grasp), obj.free_axis)};
+  for (const scenario::ObjectSpec::ExtraGrasp& g : obj.grasps) specs.push_back(declared(fitted(g.grasp), g.free_axis));
+  // and every family the shape allows (a person may hold it anywhere)
   cg::ShapeGraspOptions options;
   options.max_opening = gripper_opening;
   for (const cg::GraspSpec& g : cg::shapeGraspSpecs(shape, obj.size, options)) specs.push_back(g);

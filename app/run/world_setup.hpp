@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "control/collision/collision_config.hpp"
-#include "control/grasp/shape_grasps.hpp"
+#include "control/grasp/palm_fit.hpp"
 #include "control/tasks/grasp_frame.hpp"
 #include "scenes/scenario/scenario.hpp"
 #include "scenes/sim/sim_options.hpp"
@@ -29,8 +29,10 @@ control::ObjectShapeSettings collisionShapeFor(const scenario::ObjectSpec& objec
 
 /// The grasps the object admits, for the grasp planner (object frame): the
 /// declared grasp (with `declared_preference`, score units) and the grasp
-/// families its shape allows for a gripper opening to `gripper_opening` (m).
+/// families its shape allows for a gripper opening to `gripper_opening` (m);
+/// a declared grasp deeper than `palm` lets the fingers go moved back to where
+/// it does (palm_fit.hpp).
 std::vector<control::grasp::GraspSpec> graspSpecsFor(const scenario::ObjectSpec& object, double declared_preference,
-                                                     double gripper_opening);
+                                                     double gripper_opening, const control::grasp::PalmGeometry& palm);
 
 }  // namespace handover::app

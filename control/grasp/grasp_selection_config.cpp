@@ -43,11 +43,22 @@ IkOptions readIk(const YamlReader& r, std::vector<Vector7>& seeds) {
   return o;
 }
 
-CandidateOptions readCandidates(const YamlReader& r) {
+PalmGeometry readPalm(const YamlReader& r) {
+  PalmGeometry g;
+  g.depth = positive(r, "depth", g.depth, 0.5);
+  g.half_width = positive(r, "half_width", g.half_width, 0.5);
+  g.half_length = positive(r, "half_length", g.half_length, 0.5);
+  g.clearance = nonNegative(r, "clearance", g.clearance, 0.1);
+  r.finish();
+  return g;
+}
+
+CandidateOptions readCandidates(const YamlReader& r, PalmGeometry& palm) {
   CandidateOptions o;
   o.free_axis_step = positive(r, "free_axis_step_deg", o.free_axis_step / kDeg, 180.0) * kDeg;
   o.parallel_gripper_twin = r.getBool("parallel_gripper_twin", o.parallel_gripper_twin);
   o.pre_grasp_standoff = nonNegative(r, "pre_grasp_standoff", o.pre_grasp_standoff, 0.5);
+  if (auto c = r.optionalChild("palm")) palm = readPalm(*c);
   r.finish();
   return o;
 }
@@ -86,7 +97,7 @@ GraspSelectionConfig graspSelectionConfigFrom(const YamlReader& root) {
   GraspSelectionConfig c;
   c.frame = root.getString("frame", c.frame);
   if (auto r = root.optionalChild("ik")) c.ik = readIk(*r, c.seeds);
-  if (auto r = root.optionalChild("candidates")) c.candidates = readCandidates(*r);
+  if (auto r = root.optionalChild("candidates")) c.candidates = readCandidates(*r, c.palm);
   if (auto r = root.optionalChild("score")) c.score = readScore(*r);
   if (auto r = root.optionalChild("table")) {
     if (auto h = r->optionalChild("height")) c.table_height = h->checkRange(h->asDouble(), -10.0, 10.0);

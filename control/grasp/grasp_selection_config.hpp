@@ -8,6 +8,7 @@
 
 #include "config/yaml_reader.hpp"
 #include "control/grasp/grasp_candidates.hpp"
+#include "control/grasp/palm_fit.hpp"
 #include "control/grasp/grasp_score.hpp"
 #include "control/grasp/inverse_kinematics.hpp"
 
@@ -25,6 +26,9 @@ struct GraspSelectionConfig {
   IkOptions ik;
   std::vector<Vector7> seeds;         ///< rad, fixed IK seeds tried after the current q on a cold start
   CandidateOptions candidates;
+  /// The gripper's palm: how deep a grasp can go (candidates.palm; palm_fit.hpp,
+  /// applied by whoever builds the specs from the object's shape).
+  PalmGeometry palm;
   ScoreWeights score;
   /// The table top (world z, m): a configuration whose arm capsules (link 2
   /// onward) dip below table_height + table_clearance is not reachable.
