@@ -62,13 +62,6 @@ HandoverFsm::HandoverFsm(const YamlReader& root, ControllerInterface& controller
   ctx_.params = &params_;
   ctx_.ledger = &ledger_;
   ctx_.object = object;
-  // a small object goes onto the palm, not above it: its centre no higher than the palm plus
-  // its own extent below the centre (the hand's z in the object's frame as presented)
-  if (object.shape.known()) {
-    const Vector3 up = params_.object_in_hand.linear().transpose() * Vector3::UnitZ();
-    const double resting = params_.palm_height + 0.5 * io::extentAlong(object.shape, up);
-    params_.object_in_hand.translation().z() = std::min(params_.object_in_hand.translation().z(), resting);
-  }
   ctx_.grasp.offset = object.grasp_in_object;
   ctx_.presentation.offset = params_.object_in_hand * object.grasp_in_object;
 }

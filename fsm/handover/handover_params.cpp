@@ -119,7 +119,6 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
   p.ready_pose = readPose(poses.child("ready"));
   poses.finish();
   p.object_in_hand = readPose(n.child("object_in_hand"));
-  p.palm_height = n.child("palm_height").checkRange(n.child("palm_height").asDouble(), 0.0, 0.2);
   n.finish();
   return p;
 }

@@ -91,13 +91,8 @@ struct HandoverParams {
   Isometry stow_pose = Isometry::Identity();   ///< where a taken object is carried
   Isometry safe_pose = Isometry::Identity();   ///< where the robot retreats after an abort
   Isometry ready_pose = Isometry::Identity();  ///< where an object to give is held
-  /// Desired object pose in the person's hand frame when presenting; a small
-  /// object is lowered onto the palm (HandoverFsm, from its shape).
+  /// Desired object pose in the person's hand frame when presenting.
   Isometry object_in_hand = Isometry::Identity();
-  /// m, the palm's surface above the person's grip point along the hand's z:
-  /// a given object rests on it, its centre no higher than this plus its own
-  /// extent below the centre.
-  double palm_height = 0.015;
 };
 
 /// Reads and validates `params`; throws InputError naming file, key, line.

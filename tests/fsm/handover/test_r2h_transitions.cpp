@@ -333,30 +333,5 @@ TEST(HandoverR2H, WithdrawWhilePresentingRetreats) {
   EXPECT_EQ(rig.leaves()[rig.leaves().size() - 2], "Present");
 }
 
-// A ball goes onto the receiver's palm, not above it: its centre at most the
-// palm's height over the grip point plus its radius (a ball of 2.6 cm radius
-// held 5 cm up was 3.1 cm from the grip point, out of the scripted receiver's
-// 3 cm reach: seed 12's g12_00399). A tall bottle still sits object_in_hand up.
-TEST(HandoverR2H, ABallIsPresentedRestingOnThePalm) {
-  io::ObjectShape ball;
-  ball.kind = io::ObjectShape::Kind::kSphere;
-  ball.size = Vector3(0.026, 0, 0);
-  io::ObjectShape bottle;
-  bottle.kind = io::ObjectShape::Kind::kCylinder;
-  bottle.size = Vector3(0.03, 0.20, 0);
-  const Rig plain(true);
-  const double configured = plain.fsm->params().object_in_hand.translation().z();
-  const Rig with_ball(true, false, ball);
-  EXPECT_NEAR(with_ball.fsm->params().object_in_hand.translation().z(), with_ball.fsm->params().palm_height + 0.026,
-              1e-12);
-  EXPECT_LT(with_ball.fsm->params().object_in_hand.translation().z(), configured);
-  // the presentation the approach tracks is built from it
-  EXPECT_NEAR(with_ball.fsm->context().presentation.offset.translation().z(),
-              (with_ball.fsm->params().object_in_hand * with_ball.fsm->context().object.grasp_in_object).translation().z(),
-              1e-12);
-  const Rig with_bottle(true, false, bottle);
-  EXPECT_DOUBLE_EQ(with_bottle.fsm->params().object_in_hand.translation().z(), configured);
-}
-
 }  // namespace
 }  // namespace handover::fsm::test
