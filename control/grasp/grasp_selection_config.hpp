@@ -8,9 +8,9 @@
 
 #include "config/yaml_reader.hpp"
 #include "control/grasp/grasp_candidates.hpp"
-#include "control/grasp/palm_fit.hpp"
 #include "control/grasp/grasp_score.hpp"
 #include "control/grasp/inverse_kinematics.hpp"
+#include "control/grasp/palm_fit.hpp"
 
 namespace handover::control::grasp {
 
