@@ -74,7 +74,8 @@ std::vector<control::grasp::GraspSpec> graspSpecsFor(const scenario::ObjectSpec&
                                    : obj.shape == scenario::Shape::Sphere ? cg::PrimitiveShape::kSphere
                                                                           : cg::PrimitiveShape::kCylinder;
   // a declared grasp deeper than the palm lets the fingers go is taken as deep as it does
-  const auto fitted = [&](const Eigen::Isometry3d& grasp) { return cg::fitToPalm(shape, obj.size, grasp, palm); };
+  const io::ObjectShape solid = scenario::primitiveShapeOf(obj);
+  const auto fitted = [&](const Eigen::Isometry3d& grasp) { return cg::fitToPalm(solid, grasp, palm); };
   std::vector<cg::GraspSpec> specs{declared(fitted(obj.grasp), obj.free_axis)};
   for (const scenario::ObjectSpec::ExtraGrasp& g : obj.grasps) specs.push_back(declared(fitted(g.grasp), g.free_axis));
   // and every family the shape allows (a person may hold it anywhere)

@@ -8,6 +8,7 @@
 
 #include "control/collision/collision_config.hpp"
 #include "control/grasp/palm_fit.hpp"
+#include "control/grasp/shape_grasps.hpp"
 #include "control/tasks/grasp_frame.hpp"
 #include "scenes/scenario/scenario.hpp"
 #include "scenes/sim/sim_options.hpp"

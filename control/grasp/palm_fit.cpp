@@ -11,30 +11,13 @@ namespace {
 constexpr int kSamples = 24;  // per axis of the object's bounding box: 1/24 of its size apart
 constexpr double kFingerHalfFace = 0.01;  // m, half a finger's face across the closing axis (Panda)
 
-// half extents of the shape's bounding box in its own frame
-Vector3 halfExtents(PrimitiveShape shape, const std::vector<double>& size) {
-  switch (shape) {
-    case PrimitiveShape::kBox: return 0.5 * Vector3(size.at(0), size.at(1), size.at(2));
-    case PrimitiveShape::kSphere: return Vector3::Constant(size.at(0));
-    case PrimitiveShape::kCylinder: return Vector3(size.at(0), size.at(0), 0.5 * size.at(1));
-  }
-  return Vector3::Zero();
-}
-
-bool inside(PrimitiveShape shape, const std::vector<double>& size, const Vector3& p) {
-  switch (shape) {
-    case PrimitiveShape::kBox: return true;  // the grid spans the box itself
-    case PrimitiveShape::kSphere: return p.norm() <= size.at(0);
-    case PrimitiveShape::kCylinder: return p.head<2>().norm() <= size.at(0);
-  }
-  return false;
-}
-
 }  // namespace
 
-double palmShift(PrimitiveShape shape, const std::vector<double>& size, const Isometry& grasp_in_object,
-                 const PalmGeometry& palm) {
-  const Vector3 half = halfExtents(shape, size);
+double palmShift(const io::ObjectShape& shape, const Isometry& grasp_in_object, const PalmGeometry& palm) {
+  if (!shape.known()) return 0.0;
+  // the shape's bounding box in its own frame, sampled; the points inside the shape count
+  const Vector3 half(0.5 * io::extentAlong(shape, Vector3::UnitX()), 0.5 * io::extentAlong(shape, Vector3::UnitY()),
+                     0.5 * io::extentAlong(shape, Vector3::UnitZ()));
   const Isometry object_in_grasp = grasp_in_object.inverse();
   const double reach_x = palm.half_width + palm.clearance, reach_y = palm.half_length + palm.clearance;
   // over the object's points under the palm: the one nearest the gripper along the approach axis
@@ -47,7 +30,7 @@ double palmShift(PrimitiveShape shape, const std::vector<double>& size, const Is
       for (int k = 0; k <= kSamples; ++k) {
         const Vector3 p_obj(half.x() * (2.0 * i / kSamples - 1.0), half.y() * (2.0 * j / kSamples - 1.0),
                             half.z() * (2.0 * k / kSamples - 1.0));
-        if (!inside(shape, size, p_obj)) continue;
+        if (io::signedDistance(shape, p_obj) > 1e-12) continue;
         const Vector3 p = object_in_grasp * p_obj;
         if (std::abs(p.x()) <= reach_x && std::abs(p.y()) <= reach_y) nearest = std::min(nearest, p.z());
         if (std::abs(p.x()) <= kFingerHalfFace) nearest_on_closing_line = std::min(nearest_on_closing_line, p.z());
@@ -61,9 +44,8 @@ double palmShift(PrimitiveShape shape, const std::vector<double>& size, const Is
   return shift;
 }
 
-Isometry fitToPalm(PrimitiveShape shape, const std::vector<double>& size, const Isometry& grasp_in_object,
-                   const PalmGeometry& palm) {
-  return grasp_in_object * Eigen::Translation3d(0.0, 0.0, -palmShift(shape, size, grasp_in_object, palm));
+Isometry fitToPalm(const io::ObjectShape& shape, const Isometry& grasp_in_object, const PalmGeometry& palm) {
+  return grasp_in_object * Eigen::Translation3d(0.0, 0.0, -palmShift(shape, grasp_in_object, palm));
 }
 
 }  // namespace handover::control::grasp

@@ -13,13 +13,12 @@
 //
 // Frames: the grasp frame in the object frame (design notes: grasp z = the
 // approach axis, fingers close along grasp y); the object frame has its
-// origin at the shape's centre (shape_grasps.hpp). Units: m. Allocates
-// nothing, but samples the object's volume: start-up only (not RT).
+// origin at the shape's centre (interfaces/object_shape.hpp). Units: m.
+// Allocates nothing, but samples the object's volume: start-up only (not RT).
 #pragma once
 
-#include <vector>
-
-#include "control/grasp/shape_grasps.hpp"
+#include "control/types.hpp"
+#include "interfaces/object_shape.hpp"
 
 namespace handover::control::grasp {
 
@@ -36,11 +35,10 @@ struct PalmGeometry {
 /// for the palm to keep its clearance from the object; 0 when it already
 /// does, or when moving back would leave no object between the fingers (the
 /// grasp is then left as it is: it was never one the palm hindered).
-double palmShift(PrimitiveShape shape, const std::vector<double>& size, const Isometry& grasp_in_object,
-                 const PalmGeometry& palm);
+/// 0 for an unknown shape.
+double palmShift(const io::ObjectShape& shape, const Isometry& grasp_in_object, const PalmGeometry& palm);
 
 /// `grasp_in_object` moved back along its approach axis by palmShift.
-Isometry fitToPalm(PrimitiveShape shape, const std::vector<double>& size, const Isometry& grasp_in_object,
-                   const PalmGeometry& palm);
+Isometry fitToPalm(const io::ObjectShape& shape, const Isometry& grasp_in_object, const PalmGeometry& palm);
 
 }  // namespace handover::control::grasp

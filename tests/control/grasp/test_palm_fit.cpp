@@ -8,6 +8,12 @@
 namespace handover::control::grasp {
 namespace {
 
+io::ObjectShape box(double x, double y, double z) { return {io::ObjectShape::Kind::kBox, Vector3(x, y, z)}; }
+io::ObjectShape cylinder(double radius, double height) {
+  return {io::ObjectShape::Kind::kCylinder, Vector3(radius, height, 0.0)};
+}
+io::ObjectShape sphere(double radius) { return {io::ObjectShape::Kind::kSphere, Vector3(radius, 0.0, 0.0)}; }
+
 // grasp frame in the object frame: TCP at `pos`, turned by `pitch` about y from
 // straight down (pitch 0: the approach along the object's -z, from above)
 Isometry graspAt(const Vector3& pos, double pitch) {
@@ -22,11 +28,11 @@ Isometry graspAt(const Vector3& pos, double pitch) {
 TEST(PalmFit, AGraspThePalmAllowsIsLeftAsItIs) {
   const PalmGeometry palm;
   // from above, 4 cm into a box 17 cm tall: the palm 4.5 cm behind the TCP stays over the top face
-  EXPECT_DOUBLE_EQ(palmShift(PrimitiveShape::kBox, {0.06, 0.05, 0.17}, graspAt({0, 0, 0.045}, 0.0), palm), 0.0);
+  EXPECT_DOUBLE_EQ(palmShift(box(0.06, 0.05, 0.17), graspAt({0, 0, 0.045}, 0.0), palm), 0.0);
   // a ball through its centre at 45 degrees, a bottle from the side or from above
-  EXPECT_DOUBLE_EQ(palmShift(PrimitiveShape::kSphere, {0.035}, graspAt(Vector3::Zero(), M_PI / 4), palm), 0.0);
-  EXPECT_DOUBLE_EQ(palmShift(PrimitiveShape::kCylinder, {0.035, 0.2}, graspAt({0, 0, 0.065}, M_PI / 2), palm), 0.0);
-  EXPECT_DOUBLE_EQ(palmShift(PrimitiveShape::kCylinder, {0.035, 0.2}, graspAt({0, 0, 0.06}, 0.0), palm), 0.0);
+  EXPECT_DOUBLE_EQ(palmShift(sphere(0.035), graspAt(Vector3::Zero(), M_PI / 4), palm), 0.0);
+  EXPECT_DOUBLE_EQ(palmShift(cylinder(0.035, 0.2), graspAt({0, 0, 0.065}, M_PI / 2), palm), 0.0);
+  EXPECT_DOUBLE_EQ(palmShift(cylinder(0.035, 0.2), graspAt({0, 0, 0.06}, 0.0), palm), 0.0);
 }
 
 // The benchmark's g91_00315: 45 degrees onto a box 10 cm long, the TCP on its
@@ -35,25 +41,25 @@ TEST(PalmFit, AGraspThePalmAllowsIsLeftAsItIs) {
 // palm keeps its clearance, 6.7 - 4.54 + 0.5 = 2.7 cm (to the sampling's 4 mm).
 TEST(PalmFit, AnAngledGraspIntoALongBoxMovesBackUntilThePalmClearsItsEdge) {
   const PalmGeometry palm;
-  const std::vector<double> box{0.0997, 0.0647, 0.156};
+  const io::ObjectShape long_box = box(0.0997, 0.0647, 0.156);
   const Isometry grasp = graspAt({0, 0, 0.033}, M_PI / 4);
-  const double shift = palmShift(PrimitiveShape::kBox, box, grasp, palm);
+  const double shift = palmShift(long_box, grasp, palm);
   const double edge_behind = std::sqrt(0.5) * (0.0997 / 2 + (0.078 - 0.033));
   EXPECT_NEAR(shift, edge_behind - palm.depth + palm.clearance, 0.004);
   // moved back along its own approach axis, its orientation kept
-  const Isometry fitted = fitToPalm(PrimitiveShape::kBox, box, grasp, palm);
+  const Isometry fitted = fitToPalm(long_box, grasp, palm);
   EXPECT_LT((fitted.linear() - grasp.linear()).norm(), 1e-12);
   EXPECT_NEAR((grasp.translation() - fitted.translation()).dot(grasp.linear().col(2)), shift, 1e-12);
   EXPECT_NEAR((grasp.translation() - fitted.translation()).cross(grasp.linear().col(2)).norm(), 0.0, 1e-12);
   // once moved, it needs no more
-  EXPECT_LT(palmShift(PrimitiveShape::kBox, box, fitted, palm), 0.004);
+  EXPECT_LT(palmShift(long_box, fitted, palm), 0.004);
 }
 
 // From the side through the middle of a box 12 cm deep: its near face is 6 cm
 // behind the TCP, the palm 4.5 cm: back by the difference and the clearance.
 TEST(PalmFit, ASideGraspThroughADeepBoxMovesBackToItsNearFace) {
   const PalmGeometry palm;
-  const double shift = palmShift(PrimitiveShape::kBox, {0.12, 0.05, 0.18}, graspAt(Vector3::Zero(), M_PI / 2), palm);
+  const double shift = palmShift(box(0.12, 0.05, 0.18), graspAt(Vector3::Zero(), M_PI / 2), palm);
   EXPECT_NEAR(shift, 0.06 - palm.depth + palm.clearance, 0.003);
 }
 
@@ -63,7 +69,7 @@ TEST(PalmFit, AGraspThatWouldLeaveTheObjectIsNotMoved) {
   PalmGeometry palm;
   palm.half_length = 0.3;  // a palm wide enough to cover the whole box
   // from above, 4 cm above the top face of a flat wide box: the fingers would not reach it anyway
-  EXPECT_DOUBLE_EQ(palmShift(PrimitiveShape::kBox, {0.3, 0.05, 0.04}, graspAt({0, 0, 0.06}, 0.0), palm), 0.0);
+  EXPECT_DOUBLE_EQ(palmShift(box(0.3, 0.05, 0.04), graspAt({0, 0, 0.06}, 0.0), palm), 0.0);
 }
 
 }  // namespace
