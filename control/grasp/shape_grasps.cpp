@@ -42,8 +42,17 @@ void addBoxFamilies(const Vector3& edges, const ShapeGraspOptions& o, std::vecto
         s.placement.linear().col(1) = y;
         s.placement.linear().col(2) = z;
         const double half = 0.5 * edges[along];
-        s.placement.translation() = side * std::max(0.0, half - o.depth) * Vector3::Unit(along);
+        const Vector3 in = side * std::max(0.0, half - o.depth) * Vector3::Unit(along);
+        s.placement.translation() = in;
         out.push_back(s);
+        // and toward either end of the third edge, where a hand holding the middle leaves room
+        const int third = 3 - across - along;
+        const double end = 0.5 * edges[third] - o.end_inset;
+        if (end < o.end_inset) continue;
+        for (double toward : {1.0, -1.0}) {
+          s.placement.translation() = in + toward * end * Vector3::Unit(third);
+          out.push_back(s);
+        }
       }
     }
   }

@@ -9,7 +9,12 @@
 // - sphere: the same three directions through the centre, free about z;
 // - box: for every axis the fingers can close across (edge <= the opening),
 //   an approach along each of the two other axes, from both sides (the
-//   half-turn twin covers the finger flip), the TCP `depth` inside the face.
+//   half-turn twin covers the finger flip), the TCP `depth` inside the face,
+//   at the middle of the third edge and, where that edge is long enough,
+//   `end_inset` from either of its ends: a person holds a box anywhere, often
+//   by its middle, and the free end is what a receiver takes (a tall box held
+//   high by its middle: the side grasps at the middle put the palm in the
+//   person's hand and the top grasp was out of reach).
 // Frames and conventions as grasp_candidates.hpp. Units: m. Allocates (start-up).
 #pragma once
 
@@ -25,6 +30,10 @@ struct ShapeGraspOptions {
   double max_opening = 0.08;  ///< m, the gripper's full opening
   double opening_margin = 0.01;  ///< m, kept between the object and the open fingers
   double depth = 0.02;        ///< m, how far inside a box face or a cylinder's top the TCP goes (capped at the centre)
+  /// m, a box grasp toward an end keeps the TCP this far from it (a finger's
+  /// half width and the sensing error); only edges of at least 4 end_insets
+  /// get such grasps
+  double end_inset = 0.025;
 };
 
 /// Grasp specs of a shape. `size` as in scenario files: cylinder [radius, height],

@@ -7,7 +7,13 @@
 // - a box held out by a hand inside the meeting region but reaching past its
 //   edge: the robot waited in WaitForOffer until the person gave up and
 //   dropped it; the handover location is the person's grip point
-//   (fsm/handover/perception_checks.hpp inWorkspace).
+//   (fsm/handover/perception_checks.hpp inWorkspace);
+// - a tall box held out far, tilted away, by a hand round its middle: the
+//   top grasp's pre-grasp lay past the stretched elbow and the side grasps
+//   through the middle put the palm in the hand; no grasp was reachable,
+//   the gripper hung 4 cm below the unreachable pre-grasp until the person
+//   gave up. A box is now also grasped by either end of its third edge
+//   (control/grasp/shape_grasps.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -38,6 +44,14 @@ TEST(TakeGeometry, ABoxHeldOutPastTheWorkspaceEdgeIsTaken) {
   const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/h2r_box_past_workspace_edge.yaml");
   EXPECT_EQ(r.outcome, "success");
   EXPECT_EQ(visits(r, "/Approach"), 1);
+  EXPECT_EQ(r.human_contacts, 0);
+}
+
+TEST(TakeGeometry, ATallBoxHeldFarByItsMiddleIsTakenByItsFreeEnd) {
+  const testing::ScratchDir dir("tall_box_middle");
+  const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/h2r_tall_box_held_by_its_middle.yaml");
+  EXPECT_EQ(r.outcome, "success");
+  EXPECT_EQ(visits(r, "/Approach"), 1) << "the first approach did not get there";
   EXPECT_EQ(r.human_contacts, 0);
 }
 
