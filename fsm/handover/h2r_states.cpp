@@ -49,7 +49,7 @@ void WaitForPerson::configure(const YamlReader& def) {
 }
 
 void WaitForPerson::onStart(HandoverContext& ctx) {
-  settled_since_ = -1.0;
+  rest_.reset();
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(hand_ ? ObservationTarget::kHand : ObservationTarget::kObject);
   ctrl().setPoseTarget(ctx.in.tcp_pose);  // at rest while waiting
@@ -65,20 +65,19 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   const Vector3 pos = (p.anticipate_reach ? restPose(body) : body.pose).translation();
   const bool usable = fresh(body, p.max_data_age) && inWorkspace(ctx, hand_) && (!hand_ || ctx.in.hand_open);
   if (!usable) {
-    settled_since_ = -1.0;
+    rest_.reset();
     return false;
   }
   bool ready = speedToward(p.workspace.center, body) > approach_speed_;
   const bool home_known = hand_ ? ctx.home_hand_known : ctx.home_object_known;
   const Vector3& home = hand_ ? ctx.home_hand : ctx.home_object;
   const bool at_home = home_radius_ > 0.0 && home_known && (pos - home).norm() < home_radius_;
-  const bool resting = (pos - p.workspace.center).norm() <= p.reach_radius &&
-                       body.velocity.head<3>().norm() < settle_speed_ && !at_home;
-  if (!resting) {
-    settled_since_ = -1.0;
+  // resting, on its displacement (rest_window.hpp): a person holding the object still after a
+  // dropout was never seen to rest by the noisy speed, and the robot gave up on them
+  if ((pos - p.workspace.center).norm() > p.reach_radius || at_home) {
+    rest_.reset();
   } else {
-    if (settled_since_ < 0.0) settled_since_ = ctx.time;
-    ready = ready || ctx.time - settled_since_ >= settle_time_;
+    ready = rest_.rests(pos, ctx.time, settle_speed_, settle_time_) || ready;
   }
   if (ready) setOutput(out_);
   return ready;

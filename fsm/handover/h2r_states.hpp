@@ -5,6 +5,7 @@
 
 #include "fsm/handover/grasp_funnel.hpp"
 #include "fsm/handover/handover_state.hpp"
+#include "fsm/handover/rest_window.hpp"
 #include "fsm/handover/take_back.hpp"
 
 namespace handover::fsm {
@@ -12,7 +13,8 @@ namespace handover::fsm {
 /// [Offered] (WaitForOffer) / [ReceiverComing] (WaitForReceiver). Holds the
 /// TCP still and observes the object (or hand) until it is inside the
 /// workspace and either comes toward the robot faster than approach_speed,
-/// or rests (speed < settle_speed for settle_time) within params.reach_radius.
+/// or rests (moves less than settle_speed * settle_time over settle_time:
+/// rest_window.hpp) within params.reach_radius.
 /// WaitForReceiver also needs HandoverInput::hand_open. With home_radius
 /// (m, optional; after an abort) a rest within that distance of where the
 /// body was first seen (the person's rest place, HandoverContext::home_*)
@@ -30,7 +32,7 @@ class WaitForPerson : public HandoverState {
   int out_;
   double approach_speed_ = 0.1, settle_speed_ = 0.05, settle_time_ = 0.3;
   double home_radius_ = 0.0;  ///< m, 0: a rest anywhere within reach counts
-  double settled_since_ = -1.0;
+  RestWindow rest_;  ///< the body resting within reach
 };
 
 /// [Near, Withdrawn] Observation on the object (or hand), tracking the grasp

@@ -84,7 +84,8 @@ void Present::configure(const YamlReader& def) {
 }
 
 void Present::onStart(HandoverContext& ctx) {
-  since_ = pull_since_ = -1.0;
+  rest_.reset();
+  pull_since_ = -1.0;
   last_time_ = ctx.time;
   ctx.force_holding = ctx.force;  // the object's and hand's weight, as carried in
   ctx.interaction_holding = ctx.interaction;
@@ -115,20 +116,13 @@ bool Present::onRun(HandoverContext& ctx) {
   HandoverInput at = ctx.in;  // against the presentation itself, not the raised target
   at.target_pose = trackedGraspFrame(ctx);
   if (!presentedAtTarget(at, ctx.object, pos_tol_, rot_tol_, speed_tol_)) {
-    since_ = -1.0;
+    rest_.reset();
     return false;
   }
-  // and the receiver's hand at rest over the settle window: DetectPull holds
-  // still, and held still against a hand still moving (0.1-0.2 m/s) the
-  // object was pushed along with it, 2 cm before anything counted as a pull.
-  // Its displacement over the window, not its speed: the perceived speed
-  // under sensing noise never stayed below the tolerance (a give aborted)
-  const Vector3 hand = ctx.in.hand.pose.translation();
-  if (since_ < 0.0 || (hand - hand_at_since_).norm() > speed_tol_ * settle_time_) {
-    since_ = ctx.time;
-    hand_at_since_ = hand;
-  }
-  if (ctx.time - since_ < settle_time_) return false;
+  // and the receiver's hand at rest over the settle window (rest_window.hpp): DetectPull holds
+  // still, and held still against a hand still moving (0.1-0.2 m/s) the object was pushed along
+  // with it, 2 cm before anything counted as a pull
+  if (!rest_.rests(ctx.in.hand.pose.translation(), ctx.time, speed_tol_, settle_time_)) return false;
   setOutput(presented_);
   return true;
 }

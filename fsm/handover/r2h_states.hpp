@@ -3,6 +3,7 @@
 
 #include "fsm/handover/handover_state.hpp"
 #include "fsm/handover/held_object_goal.hpp"
+#include "fsm/handover/rest_window.hpp"
 
 namespace handover::fsm {
 
@@ -60,8 +61,8 @@ class Present : public HandoverState {
   double pos_tol_ = 0.02, rot_tol_ = 0.2, speed_tol_ = 0.05, settle_time_ = 0.2;
   double pull_threshold_ = 0.0, pull_hold_ = 0.05;  ///< N (0 = off), s
   double lift_speed_ = 0.4;                         ///< m/s (presentation_descent.hpp)
-  double since_ = -1.0, pull_since_ = -1.0, last_time_ = 0.0;
-  Vector3 hand_at_since_ = Vector3::Zero();  ///< the receiver's hand when the settle window began
+  double pull_since_ = -1.0, last_time_ = 0.0;
+  RestWindow rest_;  ///< the receiver's hand at rest (settle window)
 };
 
 /// [Pulled] Holds the TCP still and records the filtered force (object and

@@ -160,6 +160,8 @@ struct World {
   double human_distance = 1.0;  // robot to the person's hand
   double arm_distance = 1.0;    // robot to the person's forearm / upper arm
   bool dropout = false;     // perception sends nothing
+  double velocity_noise = 0.0;  // m/s: the perceived velocity of the person's hand and what it holds jitters by
+                                // this much, turning each ms (a filter's estimate from a noisy sensor)
   bool knows_rest = false;  // perception predicts where the hand's move ends (its goal)
   double last_sample = 0.0;
   bool hand_open = true;
@@ -251,11 +253,13 @@ struct World {
     if (robot_grip) in.interaction_force = Vector3(0, 0, robot_carries ? 0.0 : mass * 9.81) + (person_holds ? pull : Vector3::Zero());
     const double age = time - last_sample;
     in.hand.pose = handPose();
-    in.hand.velocity.head<3>() = hand_vel;
+    const double turn = 2.0 * time * 1000.0;  // rad: a new direction every ms
+    const Vector3 jitter = velocity_noise * Vector3(std::cos(turn), std::sin(turn), 0.0);
+    in.hand.velocity.head<3>() = hand_vel + jitter;
     in.hand.valid = !dropout;
     in.hand.age = age;
     in.object.pose = objectPose();
-    in.object.velocity.head<3>() = person_holds ? hand_vel : tcp_vel;
+    in.object.velocity.head<3>() = person_holds ? Vector3(hand_vel + jitter) : tcp_vel;
     in.object.valid = !dropout;
     in.object.age = age;
     if (knows_rest) {  // a perfect reach prediction: where the hand's move ends

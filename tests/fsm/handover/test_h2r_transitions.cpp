@@ -425,6 +425,20 @@ TEST(HandoverH2R, APersonBackAtRestWhereTheyStartedIsNotOfferingAgain) {
   }
 }
 
+// The perceived speed of a noisy sensor's body at rest stays above settle_speed (seed 1: 0.04 m/s
+// per axis): resting is read off the displacement over settle_time (rest_window.hpp). Before, a
+// person who held the object still within reach after a dropout was never seen to offer it.
+TEST(HandoverH2R, AnObjectHeldStillIsOfferedWhateverItsPerceivedSpeedsNoise) {
+  Rig rig;
+  // held out at rest within reach from the start: no approach toward the robot starts it, only
+  // resting does; the noise (below approach_speed, above settle_speed) turns in the floor's plane
+  rig.world.hand = rig.world.hand_goal = kMeet;
+  rig.world.object = kMeet + rig.world.object_in_hand;
+  rig.world.velocity_noise = 0.08;
+  EXPECT_TRUE(rig.runUntilState("Approach", 1.0)) << rig.fsm->activePath();
+  EXPECT_GE(rig.world.time, 0.3) << "approached before the object rested for settle_time";
+}
+
 TEST(HandoverH2R, NoReleaseOpensAndRetreatsWithoutPayload) {
   Rig rig;
   rig.world.moveHand(kMeet, 0.5);  // the person never lets go
