@@ -12,9 +12,9 @@ double HandoverParams::gripForce(double mass, const Vector3& com_in_tcp) const {
   return std::min(grip_max_force, std::max(grip_min_force, f));
 }
 
-bool Workspace::contains(const Vector3& p) const {
-  return (p - center).norm() <= radius && (p.array() >= box_min.array()).all() &&
-         (p.array() <= box_max.array()).all();
+bool Workspace::contains(const Vector3& p, double margin) const {
+  return (p - center).norm() <= radius + margin && (p.array() >= box_min.array() - margin).all() &&
+         (p.array() <= box_max.array() + margin).all();
 }
 
 Isometry readPose(const YamlReader& node) {
@@ -111,6 +111,7 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
   p.max_data_age = positive(w, "max_data_age", 5.0);
   p.stale_timeout = positive(w, "stale_timeout", 10.0);
   p.withdraw_speed = positive(w, "speed", 5.0);
+  if (auto m = w.optionalChild("workspace_margin")) p.withdraw_workspace_margin = m->checkRange(m->asDouble(), 0.0, 0.5);
   if (auto f = w.optionalChild("take_back_force")) p.take_back_force = f->checkRange(f->asDouble(), 0.0, 200.0);
   w.finish();
   const YamlReader poses = n.child("poses");

@@ -14,7 +14,8 @@ struct Workspace {
   double radius = 0.85;                        ///< m
   Vector3 box_min = Vector3(0.15, -0.6, -0.1); ///< m
   Vector3 box_max = Vector3(1.0, 0.6, 0.9);    ///< m
-  bool contains(const Vector3& p) const;
+  /// Inside both, each grown by `margin` (m; the sphere's radius, the box's faces).
+  bool contains(const Vector3& p, double margin = 0.0) const;
 };
 
 struct HandoverParams {
@@ -84,6 +85,9 @@ struct HandoverParams {
   double max_data_age = 0.1;         ///< s, older samples are not used to start an approach
   double stale_timeout = 0.5;        ///< s without a sample during an approach = the person withdrew
   double withdraw_speed = 0.3;       ///< m/s away from workspace.center = the person withdrew
+  /// m: the workspace grows by this for the withdrawal test (not for the offer): a hand resting
+  /// on the region's edge went out and in with every noisy sample, withdrawn and offered again
+  double withdraw_workspace_margin = 0.0;
   /// N: a pull beyond the object's weight toward where the person's hand came from, while
   /// the fingers close on or hold the object they still carry = they take it back (0: never)
   double take_back_force = 0.0;

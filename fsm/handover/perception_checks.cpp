@@ -13,11 +13,11 @@ double speedToward(const Vector3& center, const SensedBody& body) {
 
 bool fresh(const SensedBody& body, double max_age) { return body.valid && body.age <= max_age; }
 
-bool inWorkspace(const HandoverContext& ctx, bool hand) {
+bool inWorkspace(const HandoverContext& ctx, bool hand, double margin) {
   const HandoverParams& p = *ctx.params;
   const auto at = [&](const SensedBody& b) { return (p.anticipate_reach ? restPose(b) : b.pose).translation(); };
-  if (p.workspace.contains(at(hand ? ctx.in.hand : ctx.in.object))) return true;
-  return !hand && fresh(ctx.in.hand, p.max_data_age) && p.workspace.contains(at(ctx.in.hand));
+  if (p.workspace.contains(at(hand ? ctx.in.hand : ctx.in.object), margin)) return true;
+  return !hand && fresh(ctx.in.hand, p.max_data_age) && p.workspace.contains(at(ctx.in.hand), margin);
 }
 
 bool withdrawn(const HandoverContext& ctx, bool hand) {
@@ -25,7 +25,7 @@ bool withdrawn(const HandoverContext& ctx, bool hand) {
   const SensedBody& body = hand ? ctx.in.hand : ctx.in.object;
   if (body.age > p.stale_timeout) return true;
   if (!body.valid) return false;  // a short dropout: keep the last decision
-  if (!inWorkspace(ctx, hand)) return true;
+  if (!inWorkspace(ctx, hand, p.withdraw_workspace_margin)) return true;
   if (-speedToward(p.workspace.center, body) > p.withdraw_speed) return true;
   // or heading back to where it rested before the reach, away from the
   // workspace centre or not; heading there, not only drifting that way: a

@@ -14,10 +14,13 @@ bool fresh(const SensedBody& body, double max_age);
 /// anticipates the reach. An offered object also counts while the hand that
 /// holds it is there: the handover location is the person's grip point (the
 /// scenario contract bounds that point by the region), and the object they
-/// hold out reaches beyond it by up to its own size.
-bool inWorkspace(const HandoverContext& ctx, bool hand);
+/// hold out reaches beyond it by up to its own size. `margin` (m) grows the
+/// region (Workspace::contains).
+bool inWorkspace(const HandoverContext& ctx, bool hand, double margin = 0.0);
 /// The person withdrew the receiver's hand (`hand`) or the offered object:
-/// stale for longer than stale_timeout, outside the workspace (inWorkspace), or moving
+/// stale for longer than stale_timeout, outside the workspace grown by
+/// withdraw_workspace_margin (inWorkspace: a hysteresis band against the
+/// sensor's noise at the region's edge), or moving
 /// away from it faster than withdraw_speed, or
 /// heading back (within 30 degrees) toward where it rested before the reach
 /// (HandoverContext::home_*) that fast: a hand resting beside the meeting

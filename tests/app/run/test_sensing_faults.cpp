@@ -138,5 +138,25 @@ TEST(SensingFaults, AFingertipThatLandsOnTheObjectIsFeltAndTheGraspMovesOver) {
   EXPECT_LE(closed - grasp_start, 2.0);
 }
 
+// A sensor's noise at rest: the filtered speed of a person holding still stays above
+// settle_speed (3.9 mm of noise at 30 Hz: 0.04 m/s per axis), so after a dropout made the
+// robot retreat, the offer was never seen again and the run ended aborted (g1_00178).
+TEST(SensingFaults, AnObjectHeldStillAfterADropoutIsTakenUnderSensorNoise) {
+  const testing::ScratchDir dir("still_after_dropout");
+  const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/h2r_still_after_dropout.yaml");
+  EXPECT_EQ(r.outcome, "success");
+  EXPECT_EQ(r.human_contacts, 0);
+}
+
+// ... and at the workspace's edge: a receiver's hand resting 5 mm inside it went out and in
+// with the noise, and the give cycled Approach / Retreat until it aborted (g91_00389).
+TEST(SensingFaults, AReceiversHandRestingOnTheWorkspacesEdgeIsGivenTheObject) {
+  const testing::ScratchDir dir("hand_on_edge");
+  const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/r2h_hand_on_workspace_edge.yaml");
+  EXPECT_EQ(r.outcome, "success");
+  EXPECT_EQ(r.retries, 0) << "withdrawn and offered again at the edge";
+  EXPECT_EQ(r.human_contacts, 0);
+}
+
 }  // namespace
 }  // namespace handover

@@ -87,5 +87,25 @@ TEST(PresentedAtTarget, AMovingGripperIsNotPresentedYet) {
   EXPECT_TRUE(presentedAtTarget(in, ball, 0.01, 15 * kDeg, 0.05));
 }
 
+// Withdrawal at the workspace's edge: entering the region offers, leaving it grown by the
+// margin withdraws. A receiver's hand resting 5 mm inside the box's face went out and in with
+// the sensor's noise: the give cycled Approach / Retreat until it aborted (g91_00389).
+TEST(Withdrawn, AHandOnTheWorkspacesEdgeIsWithdrawnOnlyOnceOutsideTheMargin) {
+  HandoverParams params;
+  params.withdraw_workspace_margin = 0.05;
+  HandoverContext ctx;
+  ctx.params = &params;
+  ctx.in.hand.valid = true;
+  ctx.in.hand.age = 0.0;
+  const double edge = params.workspace.box_min.y();
+  for (const double beyond : {-0.005, 0.02, 0.045, 0.06}) {
+    SCOPED_TRACE(beyond);
+    ctx.in.hand.pose.translation() = Vector3(0.45, edge - beyond, 0.35);
+    ASSERT_TRUE(params.workspace.contains(Vector3(0.45, 0.0, 0.35)));
+    EXPECT_EQ(inWorkspace(ctx, true), beyond < 0.0) << "the offer's region has no margin";
+    EXPECT_EQ(withdrawn(ctx, true), beyond > params.withdraw_workspace_margin);
+  }
+}
+
 }  // namespace
 }  // namespace handover::fsm
