@@ -146,13 +146,11 @@ Isometry swayingObject(int k) {
 }
 
 // `updates` selections of a moving object after a cold first update (not measured)
-void runMovingSelection(benchmark::State& state, int cold_solves_per_update, bool shape_families = false) {
+void runMovingSelection(benchmark::State& state, int cold_solves_per_update,
+                        const std::vector<GraspSpec>& specs = {bottleSideGrasp()}) {
   const Model& model = pandaModel();
   GraspSelectionConfig cfg = shippedConfig();
   cfg.cold_solves_per_update = cold_solves_per_update;
-  std::vector<GraspSpec> specs{bottleSideGrasp()};
-  if (shape_families)  // what the handover cycle plans over: the declared grasp and the bottle's families
-    for (const GraspSpec& g : shapeGraspSpecs(PrimitiveShape::kCylinder, {0.03, 0.20})) specs.push_back(g);
   GraspSelector selector(model, specs, cfg);
   const Vector7 q_now = ready();
   int k = 0;
@@ -183,9 +181,24 @@ BENCHMARK(BM_SelectionMovingObject);
 // the same over the declared grasp and every family the bottle's shape allows
 // (side, 45 degrees, top: 84 candidates), as runtime/grasp_planning plans
 void BM_SelectionWithShapeFamilies(benchmark::State& state) {
-  runMovingSelection(state, shippedConfig().cold_solves_per_update, true);
+  // what the handover cycle plans over: the declared grasp and the bottle's families
+  std::vector<GraspSpec> specs{bottleSideGrasp()};
+  for (const GraspSpec& g : shapeGraspSpecs(PrimitiveShape::kCylinder, {0.03, 0.20})) specs.push_back(g);
+  runMovingSelection(state, shippedConfig().cold_solves_per_update, specs);
 }
 BENCHMARK(BM_SelectionWithShapeFamilies);
+
+// the same for a 5 x 6 x 20 cm box declared from the top: its families through the middle of
+// each face and by either end of the long edge (16 specs; 34 candidates with the twins)
+void BM_SelectionBoxWithShapeFamilies(benchmark::State& state) {
+  GraspSpec top;
+  top.placement.translation() = Vector3(0.0, 0.0, 0.06);
+  top.placement.linear() = Eigen::AngleAxisd(M_PI, Vector3::UnitX()).toRotationMatrix();
+  std::vector<GraspSpec> specs{top};
+  for (const GraspSpec& g : shapeGraspSpecs(PrimitiveShape::kBox, {0.05, 0.06, 0.20})) specs.push_back(g);
+  runMovingSelection(state, shippedConfig().cold_solves_per_update, specs);
+}
+BENCHMARK(BM_SelectionBoxWithShapeFamilies);
 
 // the same with every seed retried for every unreachable candidate in every
 // update (cold_solves_per_update: 0): what the retry budget saves
