@@ -11,7 +11,7 @@
 namespace handover::fsm {
 
 struct RestWindow {
-  double since = -1.0;                            ///< s, when the current rest began (-1: none)
+  double since = -1.0;               ///< s, when the current rest began (-1: none)
   Vector3 anchor = Vector3::Zero();  ///< m, world: where it began
 
   void reset() { since = -1.0; }
