@@ -105,7 +105,6 @@ GraspSelectionConfig graspSelectionConfigFrom(const YamlReader& root) {
     r->finish();
   }
   c.hysteresis = nonNegative(root, "hysteresis", c.hysteresis, 1e3);
-  if (auto r = root.optionalChild("lost_updates")) c.lost_updates = static_cast<int>(r->checkRange(r->asInt(), 0, 1000));
   c.declared_preference = nonNegative(root, "declared_preference", c.declared_preference, 1e3);
   if (auto r = root.optionalChild("cold_solves_per_update")) {
     c.cold_solves_per_update = static_cast<int>(r->checkRange(r->asInt(), 0, 100000));

@@ -35,11 +35,6 @@ struct GraspSelectionConfig {
   double table_height = 0.0;
   double table_clearance = 0.02;
   double hysteresis = 0.15;           ///< score units another candidate must gain to replace the current choice
-  /// Updates the current choice stays chosen, with its last solution, while
-  /// its IK fails: at the edge of the workspace the sensor's noise alone
-  /// makes a reachable grasp fail one update in two, and each failure handed
-  /// the arm another grasp family (a half turn away) for a few updates.
-  int lost_updates = 0;
   /// Score units added to the grasps the object declares over the families
   /// its shape allows (GraspSpec::preference; applied by whoever builds the specs).
   double declared_preference = 0.5;

@@ -27,7 +27,6 @@ void GraspSelector::reset() {
   choice_ = GraspChoice();
   cold_cursor_ = 0;
   branch_cursor_ = 0;
-  lost_ = 0;
 }
 
 bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, const Vector7& seed,
@@ -178,13 +177,6 @@ const GraspChoice& GraspSelector::update(const Isometry& X_obj, const Vector7& q
     if (evaluations_[k].feasible && (best < 0 || evaluations_[k].score.total > evaluations_[best].score.total)) best = k;
   }
   const int current = choice_.valid ? choice_.index : -1;
-  // the current choice lost for a few updates stays, with its last solution (no flicker at the
-  // workspace's edge)
-  lost_ = current >= 0 && !evaluations_[current].feasible ? lost_ + 1 : 0;
-  if (current >= 0 && !evaluations_[current].feasible && lost_ <= config_.lost_updates) {
-    choice_.switched = false;
-    return choice_;
-  }
   int pick = best;
   if (current >= 0 && evaluations_[current].feasible &&
       (hold_ || evaluations_[best].score.total <= evaluations_[current].score.total + config_.hysteresis)) {

@@ -5,9 +5,7 @@
 // pose, solves IK for both, scores the grasp configuration (grasp_score.hpp;
 // the margin and clearance terms take the worse of grasp and pre-grasp) and
 // keeps the current choice unless another feasible candidate beats it by
-// `hysteresis`, or the current one became unreachable (for more than
-// `lost_updates` updates in a row: until then it stays, with its last
-// solution). IK starts warm from each
+// `hysteresis`, or the current one became unreachable. IK starts warm from each
 // candidate's previous solution; a candidate without one (first update, or its
 // warm solve failed) is solved from the current q and every fixed seed on the
 // first update, keeping the best-scoring solution; later, such candidates get
@@ -104,7 +102,6 @@ class GraspSelector {
   std::vector<Vector7> seeds_;  ///< [q_now, fixed seeds...], slot 0 rewritten each update
   int cold_cursor_ = 0;         ///< round-robin start of the cold budget
   int branch_cursor_ = 0;       ///< round-robin start of the branch budget
-  int lost_ = 0;                ///< updates in a row the current choice's IK failed
   bool hold_ = false;
   GraspChoice choice_;
 };

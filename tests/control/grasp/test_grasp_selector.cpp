@@ -331,30 +331,6 @@ TEST(GraspSelector, ReportsNoChoiceForAnObjectOutOfReach) {
   for (const CandidateEvaluation& e : selector.evaluations()) EXPECT_FALSE(e.feasible);
 }
 
-TEST(GraspSelector, AChoiceLostForFewerThanLostUpdatesStays) {
-  // at the workspace's edge the pose's noise alone fails a reachable grasp's IK now and then: the
-  // choice stays, with its last solution, for lost_updates updates in a row, and goes after that
-  const Model& model = testing::panda();
-  GraspSelectionConfig config = testing::shippedConfig();
-  config.lost_updates = 3;
-  GraspSelector selector(model, {bottleSideGrasp()}, config);
-  const GraspChoice before = selector.update(bottleAt(Vector3(0.55, 0.0, 0.30)), testing::readyConfiguration());
-  ASSERT_TRUE(before.valid);
-  const Isometry out_of_reach = bottleAt(Vector3(1.5, 0.0, 0.3));
-  for (int k = 1; k <= config.lost_updates; ++k) {
-    const GraspChoice& c = selector.update(out_of_reach, testing::readyConfiguration());
-    EXPECT_FALSE(selector.evaluations()[before.index].feasible) << "update " << k;
-    EXPECT_TRUE(c.valid) << "update " << k;
-    EXPECT_EQ(c.index, before.index);
-    EXPECT_FALSE(c.switched);
-    EXPECT_LT((c.q_grasp - before.q_grasp).norm(), 1e-12);
-  }
-  EXPECT_FALSE(selector.update(out_of_reach, testing::readyConfiguration()).valid);
-  // back in reach, found again; a single lost update then no longer counts the old streak
-  ASSERT_TRUE(selector.update(bottleAt(Vector3(0.55, 0.0, 0.30)), testing::readyConfiguration()).valid);
-  EXPECT_TRUE(selector.update(out_of_reach, testing::readyConfiguration()).valid);
-}
-
 TEST(GraspSelector, NonFiniteInputKeepsTheChoice) {
   const Model& model = testing::panda();
   GraspSelector selector(model, {bottleSideGrasp()}, testing::shippedConfig());
