@@ -39,20 +39,22 @@ TEST(TakeGeometry, AnAngledGraspDeeperThanThePalmAllowsIsTakenAsDeepAsItDoes) {
   EXPECT_EQ(r.human_contacts, 0);
 }
 
-TEST(TakeGeometry, ABoxHeldOutPastTheWorkspaceEdgeIsTaken) {
-  const testing::ScratchDir dir("box_past_edge");
-  const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/h2r_box_past_workspace_edge.yaml");
-  EXPECT_EQ(r.outcome, "success");
-  EXPECT_EQ(visits(r, "/Approach"), 1);
-  EXPECT_EQ(r.human_contacts, 0);
-}
-
-TEST(TakeGeometry, ATallBoxHeldFarByItsMiddleIsTakenByItsFreeEnd) {
-  const testing::ScratchDir dir("tall_box_middle");
-  const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/h2r_tall_box_held_by_its_middle.yaml");
+// The take of `file` (a scenario under tests/app/run/data) succeeds on its first approach,
+// without touching the person.
+void expectTakenOnTheFirstApproach(const std::string& scratch, const std::string& file) {
+  const testing::ScratchDir dir(scratch);
+  const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/" + file);
   EXPECT_EQ(r.outcome, "success");
   EXPECT_EQ(visits(r, "/Approach"), 1) << "the first approach did not get there";
   EXPECT_EQ(r.human_contacts, 0);
+}
+
+TEST(TakeGeometry, ABoxHeldOutPastTheWorkspaceEdgeIsTaken) {
+  expectTakenOnTheFirstApproach("box_past_edge", "h2r_box_past_workspace_edge.yaml");
+}
+
+TEST(TakeGeometry, ATallBoxHeldFarByItsMiddleIsTakenByItsFreeEnd) {
+  expectTakenOnTheFirstApproach("tall_box_middle", "h2r_tall_box_held_by_its_middle.yaml");
 }
 
 }  // namespace
