@@ -30,14 +30,20 @@ std::vector<cg::GraspSpec> presentationSpecs(const control::Isometry& presentati
   upright.free_axis = control::Vector3::UnitZ();
   if (!(config.presentation_tilt > 0.0)) return {upright};
   upright.preference = config.declared_preference;
-  // tilted about the hand's x axis through the object's centre; the free turn
-  // about the vertical sweeps the tilt through every direction
-  cg::GraspSpec tilted = upright;
-  tilted.preference = 0.0;
-  tilted.placement = Eigen::Translation3d(pivot) *
-                     Eigen::AngleAxisd(config.presentation_tilt, control::Vector3::UnitX()) *
-                     Eigen::Translation3d(-pivot) * presentation;
-  return {upright, tilted};
+  // tilted about the hand's x or y axis through the object's centre; the free
+  // turn about the vertical sweeps each tilt through every direction. Two axes:
+  // the gripper turns with the object, and a tilt about the axis its fingers
+  // close along keeps them level over the palm where a tilt across it dips
+  // one fingertip toward the palm (shortfall in the score)
+  std::vector<cg::GraspSpec> specs{upright};
+  for (const control::Vector3 axis : {control::Vector3::UnitX(), control::Vector3::UnitY()}) {
+    cg::GraspSpec tilted = upright;
+    tilted.preference = 0.0;
+    tilted.placement = Eigen::Translation3d(pivot) * Eigen::AngleAxisd(config.presentation_tilt, axis) *
+                       Eigen::Translation3d(-pivot) * presentation;
+    specs.push_back(tilted);
+  }
+  return specs;
 }
 }  // namespace
 
@@ -118,6 +124,10 @@ void GraspPlanning::copyChoice(const cg::GraspChoice& c, fsm::TrackingPlan& plan
   plan.q_pre = c.q_pre_grasp;
 }
 
+int GraspPlanning::trunkObstacles(const control::Isometry* torso) const {
+  return torso == nullptr ? 0 : static_cast<int>(settings_.trunk.size());
+}
+
 int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool holding_hand,
                                    const control::Isometry* torso) {
   if (!human.valid || human.stale) return 0;
@@ -142,6 +152,17 @@ int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool 
     obstacles_[2] = capsule(human.hand, 0.0, settings_.hand_radius);
     obstacles_[2].gripper_works_here = true;
     keep(obstacles_[2], settings_.keeps.hand);
+    n = 3;
+  } else if (!settings_.hand_box_half_extents.isZero()) {
+    // the hand the object goes into: the fingers come as near as the constraints let them (keepShortfall)
+    cg::ObstacleCapsule& box = obstacles_[2];
+    box = cg::ObstacleCapsule{};
+    const control::Isometry X = human.hand * settings_.hand_box;
+    box.a = box.b = X.translation();
+    box.box_axes = X.linear();
+    box.box_half_extents = settings_.hand_box_half_extents;
+    box.keep_only = true;
+    keep(box, settings_.keeps.hand);
     n = 3;
   }
   if (torso == nullptr) return n;
@@ -173,8 +194,11 @@ void GraspPlanning::update(const perception::PerceptionEstimate& est, const cont
   }
   if (fresh_sample && est.human.stamp != hand_stamp_) {
     hand_stamp_ = est.human.stamp;
-    // the object goes into that hand; the presentation is scored against the receiver's arm only (it comes to the object)
-    const int n = personObstacles(est.human, false, nullptr);
+    // the object goes into that hand; the presentation is scored against the receiver's arm (it comes to
+    // the object) and, where the trunk is known, held short by it only (keep_only: the constraints keep
+    // the arm from it; a presentation turned to keep the fingers off the forearm put link 7 at the chest)
+    const int n = personObstacles(est.human, false, torso);
+    for (int k = n - trunkObstacles(torso); k < n; ++k) obstacles_[static_cast<std::size_t>(k)].keep_only = true;
     copyChoice(hand_.update(est.human.hand, q, obstacles_.data(), n), hand_plan_);
   }
   object_plan_.valid = false;

@@ -60,6 +60,11 @@ struct GraspPlanningSettings {
   double forearm_length = 0.27, upper_arm_length = 0.33;  ///< m, the person's arm capsules
   double forearm_radius = 0.045, upper_arm_radius = 0.055;  ///< m
   double hand_radius = 0.05;  ///< m, a sphere around the grip point (take: grasp away from the hand)
+  /// The hand box of the collision model (give: the presentation's gripper
+  /// keeps from it what the constraints keep): centre and axes in the hand
+  /// frame, half edges (m).
+  control::Isometry hand_box = control::Isometry::Identity();
+  control::Vector3 hand_box_half_extents = control::Vector3::Zero();
   /// The person's trunk (torso, head, the arm that does not hand) as capsules
   /// in the torso frame (trunkObstacles); empty when the stand is not declared.
   /// At most kMaxTrunkObstacles.
@@ -110,9 +115,11 @@ class GraspPlanning : public fsm::PlannerInterface {
  private:
   static void copyChoice(const control::grasp::GraspChoice& c, fsm::TrackingPlan& plan);
   /// Fills obstacles_ with the person's arm, their hand where it holds the
-  /// object (holding_hand: a take) and their trunk (torso given); returns
-  /// their number.
+  /// object (holding_hand: a take; otherwise the hand box, keep-only, when
+  /// settings give one) and their trunk (torso given); returns their number.
   int personObstacles(const perception::HumanEstimate& human, bool holding_hand, const control::Isometry* torso);
+  /// How many of personObstacles' last ones are the trunk (torso given).
+  int trunkObstacles(const control::Isometry* torso) const;
 
   const control::Model& model_;
   GraspPlanningSettings settings_;

@@ -93,6 +93,8 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
     ps.forearm_radius = settings.collision.person.forearm_radius;
     ps.upper_arm_radius = settings.collision.person.upper_arm_radius;
     ps.hand_radius = 0.5 * settings.collision.person.hand_size.maxCoeff();
+    ps.hand_box = settings.collision.person.hand_offset;
+    ps.hand_box_half_extents = 0.5 * settings.collision.person.hand_size;
     if (settings.stand.declared)
       ps.trunk = trunkObstacles(settings.collision.person.trunk, settings.collision.person.free_arm_radius);
     if (collision_) ps.keeps = personKeeps(collision_->collisionModel());

@@ -32,12 +32,49 @@ double segmentDistance(const Vector3& p0, const Vector3& p1, const Vector3& q0, 
   return (w + s * u - t * v).norm();
 }
 
+double segmentBoxDistance(const Vector3& p0, const Vector3& p1, const Vector3& centre, const Matrix3& axes,
+                          const Vector3& half) {
+  // in the box frame the distance of the segment's point at s is convex in s
+  // (a distance to a convex set along a line): golden-section search on [0, 1]
+  const Vector3 a = axes.transpose() * (p0 - centre);
+  const Vector3 u = axes.transpose() * (p1 - p0);
+  auto at = [&](double s) {
+    const Vector3 p = a + s * u;
+    return (p - p.cwiseMax(-half).cwiseMin(half)).norm();
+  };
+  constexpr double kInvPhi = 0.6180339887498949;
+  constexpr int kIterations = 40;  // the bracket shrinks to 0.618^40 (4e-9) of the segment
+  double lo = 0.0, hi = 1.0;
+  double x1 = hi - kInvPhi * (hi - lo), x2 = lo + kInvPhi * (hi - lo);
+  double f1 = at(x1), f2 = at(x2);
+  for (int i = 0; i < kIterations; ++i) {
+    if (f1 <= f2) {
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - kInvPhi * (hi - lo);
+      f1 = at(x1);
+    } else {
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + kInvPhi * (hi - lo);
+      f2 = at(x2);
+    }
+  }
+  // the ends are candidates too (the minimum may sit at one)
+  return std::min({f1, f2, at(0.0), at(1.0)});
+}
+
 namespace {
 
 // surface distance of capsule `c` posed by `poses` to obstacle `o` (m, negative: overlap)
 double capsuleDistance(const ChainPoses& poses, const Capsule& c, const ObstacleCapsule& o) {
   const Isometry& X = poses.oMb[c.body];
-  return segmentDistance(X * c.a, X * c.b, o.a, o.b) - c.radius - o.radius;
+  const double core = o.box_half_extents.isZero()
+                          ? segmentDistance(X * c.a, X * c.b, o.a, o.b)
+                          : segmentBoxDistance(X * c.a, X * c.b, o.a, o.box_axes, o.box_half_extents);
+  return core - c.radius - o.radius;
 }
 
 }  // namespace
@@ -47,7 +84,7 @@ double armClearance(const Model& model, const ChainPoses& poses, const ObstacleC
   for (const Capsule& c : model.capsules) {
     for (int k = 0; k < num_obstacles; ++k) {
       const ObstacleCapsule& o = obstacles[k];
-      if (o.gripper_works_here && c.role == CapsuleRole::kFingertip) continue;
+      if (o.keep_only || (o.gripper_works_here && c.role == CapsuleRole::kFingertip)) continue;
       best = std::min(best, capsuleDistance(poses, c, o));
     }
   }
@@ -71,6 +108,7 @@ double personBodyClearance(const Model& model, const ChainPoses& poses, const Ob
   double best = std::numeric_limits<double>::infinity();
   for (int k = 0; k < num_obstacles; ++k) {
     const ObstacleCapsule& o = obstacles[k];
+    if (o.keep_only) continue;
     for (const Capsule& c : model.capsules) {
       // the gripper works in the person's hand (workZoneClearance); the arm's links keep clear of it
       if (o.gripper_works_here && c.role != CapsuleRole::kArm) continue;
@@ -79,6 +117,20 @@ double personBodyClearance(const Model& model, const ChainPoses& poses, const Ob
     }
   }
   return best;
+}
+
+double keepShortfall(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
+                     int num_obstacles) {
+  double shortfall = 0.0;
+  for (int k = 0; k < num_obstacles; ++k) {
+    const ObstacleCapsule& o = obstacles[k];
+    if (o.gripper_works_here) continue;  // the fingers close in it: workZoneClearance
+    for (const Capsule& c : model.capsules) {
+      const double keep = c.role == CapsuleRole::kArm ? o.keep_arm : o.keep_gripper;
+      shortfall = std::max(shortfall, keep - capsuleDistance(poses, c, o));
+    }
+  }
+  return shortfall;
 }
 
 double lowestArmPoint(const Model& model, const ChainPoses& poses, int first_body) {

@@ -1,7 +1,8 @@
 // Clearance between the arm's collision capsules and obstacle capsules given
 // by the caller (e.g. the person's forearm and hand from perception), and
-// from the table top, for scoring and filtering configurations. Analytic segment-segment distance; no FCL here
-// (this runs over every candidate, and no witness points are needed).
+// from the table top, for scoring and filtering configurations. Analytic segment-segment distance
+// (and segment-box, for a box obstacle); no FCL here (this runs over every candidate, and no witness
+// points are needed).
 // Frames: world. Units: m. Real-time safe.
 #pragma once
 
@@ -14,6 +15,11 @@ struct ObstacleCapsule {
   Vector3 a = Vector3::Zero();  ///< m, world
   Vector3 b = Vector3::Zero();  ///< m, world
   double radius = 0.0;          ///< m
+  /// Half edges (m) of a box centred at `a` with axes `box_axes` (world),
+  /// swept by `radius`, instead of the segment (`b` unused); zero: a capsule.
+  /// The person's hand as the collision constraints see it is a box.
+  Vector3 box_half_extents = Vector3::Zero();
+  Matrix3 box_axes = Matrix3::Identity();
   /// The fingers work here (the person's hand that holds the object): the
   /// fingertip capsules (CapsuleRole::kFingertip), which close around the
   /// object in it, are not measured against it; the palm and the arm are.
@@ -26,10 +32,28 @@ struct ObstacleCapsule {
   /// than that is one the arm cannot reach (personBodyClearance).
   double keep_arm = 0.0;
   double keep_gripper = 0.0;
+  /// Only its keeps count (keepShortfall, as for every obstacle the fingers
+  /// do not work in): it adds no clearance penalty and no rejection. A give's
+  /// receiving hand (the object goes onto it: the gripper may come as near as
+  /// its constraints let it) and the receiver's trunk.
+  bool keep_only = false;
 };
 
 /// Smallest distance between the segments [p0, p1] and [q0, q1] (m).
 double segmentDistance(const Vector3& p0, const Vector3& p1, const Vector3& q0, const Vector3& q1);
+
+/// Smallest distance between the segment [p0, p1] and the box centred at
+/// `centre` with axes `axes` (world) and half edges `half` (m; 0 inside).
+double segmentBoxDistance(const Vector3& p0, const Vector3& p1, const Vector3& centre, const Matrix3& axes,
+                          const Vector3& half);
+
+/// How far the collision constraints hold the configuration short of itself:
+/// the largest amount (m) by which any capsule, the fingertips included,
+/// comes nearer an obstacle than its keep (keep_arm, keep_gripper); 0 when
+/// all keep clear. Obstacles where the gripper works are left out (their
+/// fingers close in them: workZoneClearance).
+double keepShortfall(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
+                     int num_obstacles);
 
 /// Smallest surface distance between any of the model's capsules posed by
 /// `poses` and any obstacle (m, negative when they overlap), the fingertip

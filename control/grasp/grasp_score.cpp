@@ -31,6 +31,9 @@ ScoreTerms scoreConfiguration(const Model& model, int frame_id, const ChainPoses
   if (num_obstacles > 0) {
     const double d = armClearance(model, poses, obstacles, num_obstacles);
     t.clearance = std::clamp(1.0 - d / w.clearance_ref, 0.0, 1.0);
+    // squared: millimetres short are the sensing budget at work, centimetres miss the palm
+    const double s = keepShortfall(model, poses, obstacles, num_obstacles) / w.shortfall_ref;
+    t.shortfall = std::min(1.0, s * s);
   }
   t.total = totalScore(t, w);
   return t;
@@ -38,7 +41,7 @@ ScoreTerms scoreConfiguration(const Model& model, int frame_id, const ChainPoses
 
 double totalScore(const ScoreTerms& t, const ScoreWeights& w) {
   return w.joint_margin * t.joint_margin + w.manipulability * t.manipulability - w.motion * t.motion -
-         w.clearance * t.clearance;
+         w.clearance * t.clearance - w.shortfall * t.shortfall;
 }
 
 }  // namespace handover::control::grasp

@@ -2,11 +2,13 @@
 // normalised to about [0, 1] by a reference value, then weighted.
 //
 //   total = w_margin * margin - w_motion * motion + w_manip * manipulability
-//           - w_clearance * clearance_penalty
+//           - w_clearance * clearance_penalty - w_shortfall * shortfall
 //   margin            = min_i min(1, d_i / margin_ref), d_i = distance of joint i to its nearest limit (rad)
 //   manipulability    = min(1, sqrt(det(J J')) / manipulability_ref), J = 6x7 TCP Jacobian [m; rad]
 //   motion            = |q - q_now| / motion_ref (2-norm, rad)
 //   clearance_penalty = max(0, 1 - clearance / clearance_ref), clearance (m) to the given obstacles
+//   shortfall         = min(1, (keepShortfall / shortfall_ref)^2): how far (m) the collision constraints hold
+//                       the arm short of q (the keeps of the obstacles the fingers do not work in)
 //
 // Saturating the margin says "0.5 rad from every limit is enough": beyond it,
 // motion and manipulability decide. Real-time safe.
@@ -25,6 +27,8 @@ struct ScoreWeights {
   double motion_ref = 2.0;           ///< rad, joint-space distance that costs one unit
   double clearance = 1.0;
   double clearance_ref = 0.15;       ///< m, obstacle distance below which the penalty starts
+  double shortfall = 2.0;
+  double shortfall_ref = 0.02;       ///< m held short that costs the whole weight
 };
 
 struct ScoreTerms {
@@ -32,6 +36,7 @@ struct ScoreTerms {
   double manipulability = 0.0;   ///< [0, 1]
   double motion = 0.0;           ///< >= 0
   double clearance = 0.0;        ///< penalty in [0, 1] (1 = touching or overlapping)
+  double shortfall = 0.0;        ///< penalty in [0, 1] (1 = held shortfall_ref or more short)
   double preference = 0.0;       ///< the candidate's spec's preference (GraspSpec), in the total
   double total = 0.0;
 };
@@ -43,7 +48,7 @@ double smallestLimitDistance(const Model& model, const Vector7& q);
 double manipulability(const Matrix6x7& J);
 
 /// Terms of one configuration q (rad): margin and manipulability at q, motion
-/// from q_now, clearance to the obstacles. `poses` must be chainPoses at q.
+/// from q_now, clearance to the obstacles and the shortfall their keeps cause. `poses` must be chainPoses at q.
 ScoreTerms scoreConfiguration(const Model& model, int frame_id, const ChainPoses& poses, const Vector7& q,
                               const Vector7& q_now, const ObstacleCapsule* obstacles, int num_obstacles,
                               const ScoreWeights& w);

@@ -73,6 +73,8 @@ ScoreWeights readScore(const YamlReader& r) {
   w.motion_ref = positive(r, "motion_ref", w.motion_ref, 20.0);
   w.clearance = nonNegative(r, "clearance", w.clearance, 1e3);
   w.clearance_ref = positive(r, "clearance_ref", w.clearance_ref, 2.0);
+  w.shortfall = nonNegative(r, "shortfall", w.shortfall, 1e3);
+  w.shortfall_ref = positive(r, "shortfall_ref", w.shortfall_ref, 0.5);
   r.finish();
   return w;
 }

@@ -190,6 +190,56 @@ TEST(GraspPlanning, AHandBeyondAnUprightPresentationGetsATiltedOne) {
 
 namespace handover::runtime {
 namespace {
+// how far the collision constraints hold the gripper at TCP pose `tcp_in_hand`
+// (hand frame) short of itself at the receiver's hand box
+double presentationShortfall(const GraspPlanningSettings& s, const perception::PerceptionEstimate& e,
+                             const control::Vector7& q) {
+  cg::ObstacleCapsule box;
+  box.a = box.b = (e.human.hand * s.hand_box).translation();
+  box.box_axes = (e.human.hand * s.hand_box).linear();
+  box.box_half_extents = s.hand_box_half_extents;
+  box.keep_only = true;
+  box.keep_arm = s.keeps.hand.arm;
+  box.keep_gripper = s.keeps.hand.gripper;
+  cg::ChainPoses poses;
+  cg::chainPoses(panda(), q, poses);
+  return cg::keepShortfall(panda(), poses, &box, 1);
+}
+
+// The same ball on the same high palm: tilted across the fingers' closing
+// axis, one fingertip dips toward the palm and the constraint that keeps the
+// gripper off the hand held the ball 3 cm high, out of the receiver's reach
+// (g137_00521); knowing the hand box and that keep, the planner tilts the
+// ball along the closing axis, the fingers level over the palm.
+TEST(GraspPlanning, ATiltedPresentationKeepsTheFingersOffTheReceiversPalm) {
+  GraspPlanningSettings s = topPresentation(0.05);
+  s.presentation_pivot = control::Vector3(0.0, 0.0, 0.05);
+  s.keeps.hand.gripper = 0.021;  // the shipped apart rule: sDist and the sensing budget
+  s.keeps.hand.arm = 0.04;
+  const control::Vector3 hand(0.68, 0.0, 0.56);
+  perception::PerceptionEstimate e = offered(0.2, hand + control::Vector3(0.0, 0.0, 0.08));
+  e.object.holder = perception::ObjectHolder::Robot;
+  s.hand_box_half_extents = control::Vector3(0.045, 0.04, 0.015);
+
+  GraspPlanning knowing(panda(), s);
+  knowing.update(e, readyConfiguration(), true);
+  ASSERT_TRUE(knowing.handPlan().valid);
+  const double kept = presentationShortfall(s, e, knowing.handPlan().q_target);
+
+  GraspPlanningSettings blind_settings = s;
+  blind_settings.hand_box_half_extents.setZero();  // the hand unknown to the planner
+  GraspPlanning blind(panda(), blind_settings);
+  blind.update(e, readyConfiguration(), true);
+  ASSERT_TRUE(blind.handPlan().valid);
+  const double held = presentationShortfall(s, e, blind.handPlan().q_target);
+  EXPECT_LT(kept, 0.005) << "the fingers dip toward the palm";
+  EXPECT_GT(held, 0.02) << "without the hand box the planner tilts across the fingers too";
+}
+}  // namespace
+}  // namespace handover::runtime
+
+namespace handover::runtime {
+namespace {
 // the trunk as selector capsules: inside the collision model's torso box,
 // reaching its top, bottom, front and sides; the head and the free arm as declared
 TEST(GraspPlanning, TheTrunkCapsulesFillTheTorsoBoxWithoutLeavingIt) {

@@ -2,6 +2,7 @@
 // obstacle capsule against the distance from its posed capsules.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
 #include "control/grasp/clearance.hpp"
@@ -91,6 +92,73 @@ TEST(Clearance, TheHandWhereTheFingersWorkCountsOnlyAgainstThePalmAndTheArm) {
   // moved up into the palm: a negative work-zone clearance
   hand.a = hand.b = tcp.translation() + Vector3(0, 0, 0.05);
   EXPECT_LT(workZoneClearance(model, poses, &hand, 1), 0.0);
+}
+
+// a box by a dense sampling of the segment, each point's distance exact (clamped to the box)
+double sampledBoxDistance(const Vector3& p0, const Vector3& p1, const Vector3& centre, const Matrix3& axes,
+                          const Vector3& half) {
+  double best = std::numeric_limits<double>::infinity();
+  const int n = 4000;
+  for (int i = 0; i <= n; ++i) {
+    const Vector3 p = axes.transpose() * (p0 + (p1 - p0) * i / n - centre);
+    best = std::min(best, (p - p.cwiseMax(-half).cwiseMin(half)).norm());
+  }
+  return best;
+}
+
+TEST(Clearance, SegmentBoxDistanceMatchesSampling) {
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> u(-0.3, 0.3), e(0.005, 0.08);
+  auto point = [&] { return Vector3(u(rng), u(rng), u(rng)); };
+  for (int k = 0; k < 60; ++k) {
+    const Vector3 p0 = point(), p1 = point(), centre = point(), half(e(rng), e(rng), e(rng));
+    const Matrix3 axes = Eigen::Quaterniond::UnitRandom().toRotationMatrix();
+    const double d = segmentBoxDistance(p0, p1, centre, axes, half);
+    EXPECT_NEAR(d, sampledBoxDistance(p0, p1, centre, axes, half), 2e-4) << "case " << k;
+  }
+  // through the box: 0; beside a face, parallel to it: the gap; past a corner: the corner's distance
+  const Matrix3 I = Matrix3::Identity();
+  const Vector3 half(0.045, 0.04, 0.015);
+  EXPECT_EQ(segmentBoxDistance({-0.1, 0, 0}, {0.1, 0, 0}, Vector3::Zero(), I, half), 0.0);
+  EXPECT_NEAR(segmentBoxDistance({-0.1, 0.01, 0.035}, {0.1, 0.01, 0.035}, Vector3::Zero(), I, half), 0.02, 1e-9);
+  EXPECT_NEAR(segmentBoxDistance({0.145, 0.04, 0.015}, {0.3, 0.3, 0.3}, Vector3::Zero(), I, half), 0.1, 1e-9);
+}
+
+// the receiver's hand in a give (keep-only): measured against every capsule,
+// the fingertips too, and only what comes nearer than its keep counts
+TEST(Clearance, AKeepOnlyBoxCountsHowFarItsKeepHoldsTheArmShort) {
+  const Model& model = testing::panda();
+  ChainPoses poses;
+  chainPoses(model, testing::readyConfiguration(), poses);
+  const Isometry tcp = chainFramePose(model, poses, model.frameId("tcp"));
+  // a palm-sized box whose top lies 3 cm under the TCP (gripper pointing down)
+  ObstacleCapsule hand;
+  hand.a = hand.b = tcp.translation() - Vector3(0, 0, 0.045);
+  hand.box_half_extents = Vector3(0.045, 0.04, 0.015);
+  hand.keep_only = true;
+  hand.keep_gripper = 0.05;
+  hand.keep_arm = 0.05;
+  // the nearest capsule is the fingertips' (its lowest point: 2 cm around a segment 3.4 mm above the TCP)
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const Capsule& c : model.capsules)
+    nearest = std::min(nearest, sampledBoxDistance(poses.oMb[c.body] * c.a, poses.oMb[c.body] * c.b, hand.a,
+                                                   Matrix3::Identity(), hand.box_half_extents) -
+                                    c.radius);
+  EXPECT_NEAR(nearest, 0.03 + 0.0034 - 0.02, 1e-3);
+  EXPECT_NEAR(keepShortfall(model, poses, &hand, 1), 0.05 - nearest, 1e-4);
+  hand.keep_gripper = hand.keep_arm = 0.005;
+  EXPECT_EQ(keepShortfall(model, poses, &hand, 1), 0.0);  // kept: nothing short
+  // keep-only: neither an obstacle to the clearance penalty nor a work zone
+  EXPECT_EQ(armClearance(model, poses, &hand, 1), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(workZoneClearance(model, poses, &hand, 1), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(personBodyClearance(model, poses, &hand, 1), std::numeric_limits<double>::infinity());
+  // and the score pays for the shortfall only
+  hand.keep_gripper = 0.05;
+  ScoreWeights w;
+  const ScoreTerms t = scoreConfiguration(model, model.frameId("tcp"), poses, testing::readyConfiguration(),
+                                          testing::readyConfiguration(), &hand, 1, w);
+  EXPECT_NEAR(t.shortfall, std::min(1.0, std::pow((0.05 - nearest) / w.shortfall_ref, 2)), 1e-3);
+  EXPECT_EQ(t.clearance, 0.0);
 }
 
 TEST(Scores, ManipulabilityVanishesAtTheStretchedSingularity) {
