@@ -119,12 +119,8 @@ TEST(SensingFaults, AFingertipThatLandsOnTheObjectIsFeltAndTheGraspMovesOver) {
   testing::ScratchDir dir("finger_lands");
   const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/h2r_finger_lands.yaml");
   EXPECT_EQ(r.outcome, "success");
-  const auto count = [&r](const std::string& state) {
-    return std::count_if(r.states.begin(), r.states.end(),
-                         [&state](const std::string& s) { return s.size() >= state.size() && s.compare(s.size() - state.size(), state.size(), state) == 0; });
-  };
-  EXPECT_EQ(count("/Grasp"), 1) << "the grasp needed another attempt";
-  EXPECT_EQ(count("/RetreatOpen"), 0);
+  EXPECT_EQ(testing::stateVisits(r, "/Grasp"), 1) << "the grasp needed another attempt";
+  EXPECT_EQ(testing::stateVisits(r, "/RetreatOpen"), 0);
   // closed within 2 s of entering Grasp, not at its 5 s timeout
   const testing::CsvTable log = testing::readCsv(dir.file("out") + "/log.csv");
   double grasp_start = -1.0, closed = -1.0;

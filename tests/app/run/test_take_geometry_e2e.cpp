@@ -16,7 +16,6 @@
 //   (control/grasp/shape_grasps.hpp).
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <string>
 
 #include "tests/app/run/run_repo_file.hpp"
@@ -24,37 +23,21 @@
 namespace handover {
 namespace {
 
-int visits(const app::RunSummary& r, const std::string& state) {
-  return static_cast<int>(std::count_if(r.states.begin(), r.states.end(), [&state](const std::string& s) {
-    return s.size() >= state.size() && s.compare(s.size() - state.size(), state.size(), state) == 0;
-  }));
-}
-
 TEST(TakeGeometry, AnAngledGraspDeeperThanThePalmAllowsIsTakenAsDeepAsItDoes) {
   const testing::ScratchDir dir("angled_long_box");
   const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/h2r_angled_long_box.yaml");
   EXPECT_EQ(r.outcome, "success");
-  EXPECT_EQ(visits(r, "/Grasp"), 1) << "the grasp needed another attempt";
-  EXPECT_EQ(visits(r, "/RetreatOpen"), 0);
-  EXPECT_EQ(r.human_contacts, 0);
-}
-
-// The take of `file` (a scenario under tests/app/run/data) succeeds on its first approach,
-// without touching the person.
-void expectTakenOnTheFirstApproach(const std::string& scratch, const std::string& file) {
-  const testing::ScratchDir dir(scratch);
-  const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/" + file);
-  EXPECT_EQ(r.outcome, "success");
-  EXPECT_EQ(visits(r, "/Approach"), 1) << "the first approach did not get there";
+  EXPECT_EQ(testing::stateVisits(r, "/Grasp"), 1) << "the grasp needed another attempt";
+  EXPECT_EQ(testing::stateVisits(r, "/RetreatOpen"), 0);
   EXPECT_EQ(r.human_contacts, 0);
 }
 
 TEST(TakeGeometry, ABoxHeldOutPastTheWorkspaceEdgeIsTaken) {
-  expectTakenOnTheFirstApproach("box_past_edge", "h2r_box_past_workspace_edge.yaml");
+  testing::expectSuccessAtTheFirstAttempt("box_past_edge", "h2r_box_past_workspace_edge.yaml", "/Approach");
 }
 
 TEST(TakeGeometry, ATallBoxHeldFarByItsMiddleIsTakenByItsFreeEnd) {
-  expectTakenOnTheFirstApproach("tall_box_middle", "h2r_tall_box_held_by_its_middle.yaml");
+  testing::expectSuccessAtTheFirstAttempt("tall_box_middle", "h2r_tall_box_held_by_its_middle.yaml", "/Approach");
 }
 
 }  // namespace
