@@ -82,6 +82,10 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
                                                       adapter_, settings.object)
                  : fsm::HandoverFsm::fromFile(settings.fsm_config_path, adapter_, settings.object);
   predict_reach_ = machine_->params().anticipate_reach;  // nobody reads the prediction otherwise
+  if (collision_) {
+    const control::CollisionModel& cm = collision_->collisionModel();
+    for (const control::CollisionPair& p : cm.pairs) forecast_hand_ |= p.other_body == cm.human_hand_forecast;
+  }
   if (!settings.object_grasps.empty()) {
     GraspPlanningSettings ps;
     ps.config = settings.grasp_selection;
@@ -106,7 +110,8 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
 void HandoverCycle::plan() {
   // the reach's end from the last step's hand estimate (a fit per new sample: not in the 1 ms step)
   const perception::HumanEstimate& h = estimate_->human;
-  if (predict_reach_ && h.valid && !h.stale) reach_.add(estimate_->time, h.hand, hand_vel_.velocity().head<3>().norm());
+  if ((predict_reach_ || forecast_hand_) && h.valid && !h.stale)
+    reach_.add(estimate_->time, h.hand, hand_vel_.velocity().head<3>().norm());
   if (!planning_) return;
   // once the reach's end is known the arm heads for one grasp there: no switching on the way
   const perception::ReachPrediction& reach = reach_.prediction();
@@ -199,6 +204,12 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   env.object_valid = est.object.valid && !est.object.stale && est.object.holder == perception::ObjectHolder::Person;
   env.object = est.object.pose;
   env.object_velocity = object_vel_.velocity();
+  if (forecast_hand_) {
+    // once the reach's end is trusted at all (lead > 0, from about the speed peak)
+    const perception::ReachPrediction& reach = reach_.prediction();
+    env.hand_forecast_valid = reach.reaching && reach.lead > 0.0;
+    env.hand_forecast = reach.end;
+  }
   if (collision_) collision_->setEnvironment(env);
 
   // 6b. the wrist load: the share the robot carries goes into the model, the rest is a known wrench

@@ -220,6 +220,9 @@ class HandoverCycle {
   perception::ReachPredictor reach_;  ///< fed in plan(): where the person's hand will rest
   bool robot_held_ = false;           ///< the robot held the object last step (payload set)
   bool predict_reach_ = false;        ///< the state machine anticipates reaches (params.tracking.anticipate_reach)
+  /// A collision rule keeps the arm from where the reach will end (the
+  /// human_hand_forecast body): reach_ is fitted for it too.
+  bool forecast_hand_ = false;
   /// This cycle's estimate with the hand and the object where the reach will
   /// end (as far as reach_ trusts it); read instead of the estimate while
   /// the state machine anticipates (observation target, grasp planning).

@@ -56,6 +56,7 @@ const char* kindName(control::CollisionBodyKind k) {
     case control::CollisionBodyKind::kHumanUpperArm: return "the person's upper arm";
     case control::CollisionBodyKind::kObject: return "the object the person holds out";
     case control::CollisionBodyKind::kHumanTrunk: return "the person's body (torso, legs, head or the other arm)";
+    case control::CollisionBodyKind::kHumanHandForecast: return "where the person's reaching hand will rest";
   }
   return "?";
 }

@@ -112,7 +112,7 @@ Isometry readPose(const YamlReader& r) {
 
 bool isPersonName(const std::string& pattern) {
   for (const char* n : {"human_hand", "human_forearm", "human_upper_arm", "human_torso", "human_legs", "human_head",
-                        "human_free_arm"})
+                        "human_free_arm", "human_hand_forecast"})
     if (globMatch(pattern, n)) return true;
   return false;
 }

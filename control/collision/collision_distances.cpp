@@ -60,6 +60,13 @@ void updatePoses(const CollisionModel& cm, CollisionData& cd, const Data& data, 
     cd.body_pose[idx] = env.torso * cm.bodies[idx].local;
     cd.body_twist[idx].setZero();  // a person standing: the trunk's motion is not estimated
   }
+  // the hand's way from its grip point now to the reach's end; the end stays, the start moves
+  // with the hand (the twist is taken as zero: the hand's own pairs carry its speed)
+  const Vector3 from = env.hand.translation(), way = env.hand_forecast.translation() - from;
+  Isometry along = Isometry::Identity();
+  along.translation() = from;
+  if (way.norm() > 1e-9) along.linear() = Eigen::Quaterniond::FromTwoVectors(Vector3::UnitZ(), way).toRotationMatrix();
+  segment(cm.human_hand_forecast, along, way.norm(), Vector6::Zero());
   cd.body_pose[cm.object] = env.object * cm.bodies[cm.object].local;
   cd.body_twist[cm.object] =
       shiftTwist(env.object_velocity, env.object.translation(), cd.body_pose[cm.object].translation());
@@ -96,6 +103,7 @@ void updateCollisions(const CollisionModel& cm, CollisionData& cd, const Model& 
     if (o.isPerson() && !env.person_valid) continue;
     if (o.kind == CollisionBodyKind::kHumanTrunk && !env.trunk_valid) continue;
     if (o.kind == CollisionBodyKind::kObject && !env.object_valid) continue;
+    if (o.kind == CollisionBodyKind::kHumanHandForecast && !(env.hand_forecast_valid && env.person_valid)) continue;
 
     // broad phase: skip pairs that cannot come within reach of the damper
     const double radii = a.radius + o.radius + pair.margin;

@@ -33,6 +33,13 @@ struct CollisionEnvironment {
   bool object_valid = false;
   Isometry object = Isometry::Identity();      ///< object frame in the world (shape centre)
   Vector6 object_velocity = Vector6::Zero();
+  /// Where the person's reaching hand will come to rest (grip point frame,
+  /// world; perception/reach_predictor.hpp); false: no reach is under way or
+  /// its end is not trusted yet, and pairs with the forecast give no rows.
+  /// The arm keeps out of the hand's way (from `hand` to here) before the
+  /// hand is there.
+  bool hand_forecast_valid = false;
+  Isometry hand_forecast = Isometry::Identity();
 };
 
 }  // namespace handover::control

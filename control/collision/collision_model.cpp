@@ -108,6 +108,10 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
   seg.length = 0.27;
   cm.human_forearm = addEnv("human_forearm", CollisionBodyKind::kHumanForearm, seg, cfg.person.forearm_radius,
                             Isometry::Identity());
+  // the hand's way to the end of its reach: a capsule as wide as the hand box, re-laid every cycle
+  seg.length = 0.0;
+  cm.human_hand_forecast = addEnv("human_hand_forecast", CollisionBodyKind::kHumanHandForecast, seg,
+                                  0.5 * cfg.person.hand_size.maxCoeff(), Isometry::Identity());
   seg.length = 0.33;
   cm.human_upper_arm = addEnv("human_upper_arm", CollisionBodyKind::kHumanUpperArm, seg,
                               cfg.person.upper_arm_radius, Isometry::Identity());
@@ -204,7 +208,8 @@ CollisionModel buildCollisionModel(const Model& model, const CollisionConfig& cf
         // the person is sensed: the pair also budgets the sensor's declared
         // error, except while the gripper shares the object with the person's
         // hand (`sharing` rules: there robot and hand meet at the object by design)
-        const bool budget = ob.isPerson() && !whileSharing(rule.scope);
+        const bool sensed = ob.isPerson() || ob.kind == CollisionBodyKind::kHumanHandForecast;
+        const bool budget = sensed && !whileSharing(rule.scope);
         p.margin = rule.margin + (budget ? cfg.sensing_error.budget() : 0.0);
         cm.pairs.push_back(p);
       }

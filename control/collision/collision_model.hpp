@@ -22,7 +22,11 @@ namespace handover::control {
 
 enum class CollisionBodyKind {
   kRobot, kTable, kHumanHand, kHumanForearm, kHumanUpperArm, kObject,
-  kHumanTrunk  ///< legs, torso, head or the hanging free arm: fixed shapes in the torso frame
+  kHumanTrunk,  ///< legs, torso, head or the hanging free arm: fixed shapes in the torso frame
+  /// the way the person's reaching hand will go: a capsule of the hand's
+  /// size from where it is to where the reach will end (its predicted rest):
+  /// not the person, where the person is going
+  kHumanHandForecast
 };
 
 struct CollisionBody {
@@ -63,6 +67,7 @@ struct CollisionModel {
   double broadphase_margin = 0.05;         ///< m
   int table = -1, human_hand = -1, human_forearm = -1, human_upper_arm = -1, object = -1;  ///< body indices
   int human_torso = -1, human_legs = -1, human_head = -1;                                  ///< body indices (trunk)
+  int human_hand_forecast = -1;                                                            ///< body index
   int human_free_arm = -1;  ///< body index: the other arm, hanging beside the torso (a trunk body)
   /// Model body (0..7) the gripper's capsules are on (the flange's: the hand
   /// is fixed to it); -1 without gripper capsules.

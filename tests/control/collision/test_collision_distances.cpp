@@ -286,3 +286,48 @@ pairs:
   updateCollisions(cm, cd, m, data, env);
   for (int k = 0; k < cm.numPairs(); ++k) EXPECT_FALSE(cd.results[k].active) << cm.pairLabel(k);
 }
+
+// The hand's way to the end of its reach: a capsule of the hand's size from
+// the grip point now to the predicted rest, with rows only while a forecast
+// is trusted and the person is seen.
+TEST(CollisionDistances, TheHandForecastIsTheHandsWayToItsPredictedRest) {
+  const Model& m = pandaModel();
+  CollisionConfig cfg = parseCollisionConfig(R"(
+defaults: {iDist: 0.05, sDist: 0.005}
+person:
+  hand: {size: [0.09, 0.08, 0.03]}
+pairs:
+  - {name: forecast, robot: [panda_hand*], other: human_hand_forecast, margin: 0.0}
+)",
+                                             "forecast.yaml");
+  const CollisionModel cm = buildCollisionModel(m, cfg);
+  ASSERT_GE(cm.human_hand_forecast, 0);
+  EXPECT_DOUBLE_EQ(cm.bodies[cm.human_hand_forecast].radius, 0.045);
+  CollisionData cd(cm);
+  Data data(m);
+  forwardKinematics(m, data, readyPose(), Vector7::Zero());
+  const Vector3 tcp = framePlacement(m, data, m.frameId("tcp")).translation();
+  auto nearest = [&](const CollisionEnvironment& env) {
+    updateCollisions(cm, cd, m, data, env);
+    double d = 1e9;
+    for (int k = 0; k < cm.numPairs(); ++k)
+      if (cd.results[k].active) d = std::min(d, cd.results[k].distance);
+    return d;
+  };
+  // a hand 40 cm to the side of the gripper, its reach ending 40 cm to the other side:
+  // the way passes 10 cm under the TCP
+  CollisionEnvironment env;
+  env.person_valid = true;
+  env.hand.translation() = tcp + Vector3(0.0, 0.4, -0.10);
+  env.hand_forecast.translation() = tcp + Vector3(0.0, -0.4, -0.10);
+  EXPECT_EQ(nearest(env), 1e9) << "no forecast: no rows";
+  env.hand_forecast_valid = true;
+  // the fingertips' capsule (2 cm round a segment 3.4 mm above the TCP) against the way
+  const double crossing = nearest(env);
+  EXPECT_NEAR(crossing, 0.10 + 0.0034 - 0.02 - 0.045, 2e-3);
+  // a way that ends 20 cm before it passes the gripper is farther
+  env.hand_forecast.translation() = tcp + Vector3(0.0, 0.2, -0.10);
+  EXPECT_GT(nearest(env), crossing + 0.04);
+  env.person_valid = false;
+  EXPECT_EQ(nearest(env), 1e9) << "the person unseen: no rows";
+}
