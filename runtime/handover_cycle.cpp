@@ -207,7 +207,7 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   if (forecast_hand_) {
     // once the reach's end is trusted at all (lead > 0, from about the speed peak)
     const perception::ReachPrediction& reach = reach_.prediction();
-    env.hand_forecast_valid = reach.reaching && reach.lead > 0.0;
+    env.hand_forecast_valid = reach.reaching && reach.lead > 0.0 && reach.end.matrix().allFinite();
     env.hand_forecast = reach.end;
   }
   if (collision_) collision_->setEnvironment(env);
