@@ -35,16 +35,21 @@ bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, 
   const IkResult g = solveIk(model_, frame_, grasp, seed, config_.ik);
   out.iterations += g.iterations;
   if (!g.converged) return false;
+  // no standoff (a give's presentation): the pre-grasp is the grasp, solved and scored once
+  const bool has_pre = pre_grasp.matrix() != grasp.matrix();
   // the pre-grasp lies a few cm back: its solution is next to the grasp's
-  const IkResult p = solveIk(model_, frame_, pre_grasp, g.q, config_.ik);
-  out.iterations += p.iterations;
+  const IkResult p = has_pre ? solveIk(model_, frame_, pre_grasp, g.q, config_.ik) : g;
+  if (has_pre) out.iterations += p.iterations;
   if (!p.converged) return false;
 
   ChainPoses poses;
-  chainPoses(model_, p.q, poses);
   const double floor = config_.table_height + config_.table_clearance;
-  if (lowestArmPoint(model_, poses) < floor) return false;
-  const ScoreTerms pre = scoreConfiguration(model_, frame_, poses, p.q, q_now, obstacles, num_obstacles, config_.score);
+  ScoreTerms pre;
+  if (has_pre) {
+    chainPoses(model_, p.q, poses);
+    if (lowestArmPoint(model_, poses) < floor) return false;
+    pre = scoreConfiguration(model_, frame_, poses, p.q, q_now, obstacles, num_obstacles, config_.score);
+  }
   chainPoses(model_, g.q, poses);
   if (lowestArmPoint(model_, poses) < floor) return false;
   // only the fingers go around the object in the person's hand: a grasp that puts the palm
@@ -56,10 +61,12 @@ bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, 
   // ball on a palm taken at 45 degrees over the wrist)
   if (config_.reject_inside_keeps && personBodyClearance(model_, poses, obstacles, num_obstacles) < 0.0) return false;
   ScoreTerms t = scoreConfiguration(model_, frame_, poses, g.q, q_now, obstacles, num_obstacles, config_.score);
-  // the arm must pass the pre-grasp too: the worse margin and clearance count
-  t.joint_margin = std::min(t.joint_margin, pre.joint_margin);
-  t.clearance = std::max(t.clearance, pre.clearance);
-  t.total = totalScore(t, config_.score);
+  if (has_pre) {
+    // the arm must pass the pre-grasp too: the worse margin and clearance count
+    t.joint_margin = std::min(t.joint_margin, pre.joint_margin);
+    t.clearance = std::max(t.clearance, pre.clearance);
+    t.total = totalScore(t, config_.score);
+  }
   out.q_grasp = g.q;
   out.q_pre_grasp = p.q;
   out.score = t;
