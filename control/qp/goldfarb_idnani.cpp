@@ -25,6 +25,11 @@ constexpr double kSymmetry = 1e-10;
 constexpr double kRPositive = 1e-12;
 // Warm-start multipliers below -kDual * (1 + max|u|) are genuinely negative.
 constexpr double kDual = 1e-10;
+// The returned point must satisfy every side to this fraction of the side's
+// own magnitude, sum_j |n_j x_j| + |b| (the scale of its rounding): a solve
+// that stepped along a nearly dependent normal reaches points 1e14 away whose
+// rows no longer hold, and must not be called optimal.
+constexpr double kVerify = 1e-7;
 
 bool isEqualityKind(QpRowKind k) {
   return k == QpRowKind::kEquality || k == QpRowKind::kRowFixed || k == QpRowKind::kBoundFixed;
@@ -581,6 +586,34 @@ void GoldfarbIdnaniSolver::refine() {
   }
 }
 
+// Whether x_ satisfies every equality, row side and bound (kVerify). The dual
+// loop checks only inactive sides, and only against the iterate it built.
+bool GoldfarbIdnaniSolver::primalFeasible() const {
+  const QpProblem& p = *p_;
+  const int n = n_;
+  const auto x = x_.head(n);
+  if (!x.allFinite()) return false;
+  auto holds = [](double v, double lo, double hi, double scale) {
+    const double tol = kVerify * scale;
+    return (!hasLowerSide(lo) || v >= lo - tol - kVerify * std::abs(lo)) &&
+           (!hasUpperSide(hi) || v <= hi + tol + kVerify * std::abs(hi));
+  };
+  for (int i = 0; i < p.n_eq; ++i) {
+    const double v = p.A_eq.row(i).dot(x);
+    const double scale = p.A_eq.row(i).cwiseProduct(x.transpose()).cwiseAbs().sum();
+    if (!holds(v, p.b_eq[i], p.b_eq[i], scale)) return false;
+  }
+  for (int i = 0; i < p.n_in; ++i) {
+    if (row_type_[i] == kFree) continue;
+    const double v = p.C.row(i).dot(x);
+    const double scale = p.C.row(i).cwiseProduct(x.transpose()).cwiseAbs().sum();
+    if (!holds(v, p.c_lb[i], p.c_ub[i], scale)) return false;
+  }
+  for (int j = 0; j < n; ++j)
+    if (!holds(x[j], p.x_lb[j], p.x_ub[j], std::abs(x[j]))) return false;
+  return true;
+}
+
 // ---------------------------------------------------------------- solve
 
 QpStatus GoldfarbIdnaniSolver::finish(QpStatus status, const char* message, Eigen::VectorXd& x) {
@@ -712,8 +745,14 @@ QpStatus GoldfarbIdnaniSolver::solve(const QpProblem& problem, Eigen::VectorXd& 
 
   result_.warm_started = tryWarmStart();
   const char* message = "";
-  const QpStatus status = dualLoop(message);
-  if (status == QpStatus::kOptimal) refine();
+  QpStatus status = dualLoop(message);
+  if (status == QpStatus::kOptimal) {
+    refine();
+    if (!primalFeasible()) {
+      status = QpStatus::kInfeasible;
+      message = "the constraints are nearly inconsistent: the solve left a side violated";
+    }
+  }
   return finish(status, message, x);
 }
 

@@ -9,7 +9,10 @@
 // detected as a violated side that no step can reach. It keeps H = L L' and
 // J = L^-T Q, R (the QR factors of L^-1 N for the active normals N) up to date
 // with Givens rotations, never refactorising, and finishes with one step of
-// iterative refinement on the final active set.
+// iterative refinement on the final active set. The point it returns is
+// checked against every side: one that no longer holds (a step along a nearly
+// dependent normal, taken in rounding) makes the solve kInfeasible, never a
+// wrong kOptimal.
 //
 // Each finite side of a two-sided row is one constraint (+-inf sides cost one
 // comparison); variable bounds are unit rows whose products are single
@@ -66,6 +69,7 @@ class GoldfarbIdnaniSolver final : public QpSolver {
   bool findMostViolated(QpRowKind& kind, int& index);
   QpStatus dualLoop(const char*& message);
   void refine();  // one step of iterative refinement on the final active set
+  bool primalFeasible() const;  // x_ holds every side (after refine)
   void setActiveFlag(QpRowKind kind, int index, bool on);
 
   QpSolverOptions options_;

@@ -5,8 +5,10 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <random>
+#include <string>
 
 #include "control/qp/qp_problem.hpp"
 #include "control/qp/qp_result.hpp"
@@ -117,6 +119,42 @@ inline KktResiduals kktResiduals(const QpProblem& p, const Eigen::VectorXd& x, c
     side(C.row(i).dot(x), p.c_lb[i], p.c_ub[i], C.row(i).norm(), y_in[i]);
   for (int j = 0; j < n; ++j) side(x[j], p.x_lb[j], p.x_ub[j], 1.0, y_x[j]);
   return k;
+}
+
+/// Reads a problem saved as text (tests/control/qp/data/*.txt): a first line
+/// of comment, then n n_eq n_in; H row by row; g; each inequality row as
+/// C(i, :) c_lb c_ub soft; each variable as x_lb x_ub (no equality rows).
+/// Returns false when the file is missing or short.
+inline bool loadQpText(const std::string& path, QpProblem& p) {
+  std::ifstream in(path);
+  std::string comment;
+  if (!std::getline(in, comment)) return false;
+  int n = 0, n_eq = 0, n_in = 0;
+  if (!(in >> n >> n_eq >> n_in) || n < 1 || n_eq != 0 || n_in < 0) return false;
+  p.reserve(n, 0, n_in);
+  p.n_in = n_in;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) in >> p.H(i, j);
+  for (int i = 0; i < n; ++i) in >> p.g[i];
+  for (int r = 0; r < n_in; ++r) {
+    for (int j = 0; j < n; ++j) in >> p.C(r, j);
+    in >> p.c_lb[r] >> p.c_ub[r] >> p.soft_in[r];
+  }
+  for (int i = 0; i < n; ++i) in >> p.x_lb[i] >> p.x_ub[i];
+  return static_cast<bool>(in);
+}
+
+/// Largest amount by which x violates a row side or a bound of p (0 when
+/// every side holds), each row widened by `widen` where it is soft.
+inline double largestViolation(const QpProblem& p, const Eigen::VectorXd& x, double widen = 0.0) {
+  double v = 0.0;
+  for (int i = 0; i < p.n_in; ++i) {
+    const double w = p.soft_in[i] != 0 ? widen : 0.0;
+    const double cx = p.C.row(i).dot(x);
+    v = std::max({v, p.c_lb[i] - w - cx, cx - p.c_ub[i] - w});
+  }
+  for (int j = 0; j < p.n; ++j) v = std::max({v, p.x_lb[j] - x[j], x[j] - p.x_ub[j]});
+  return v;
 }
 
 }  // namespace handover::control::test

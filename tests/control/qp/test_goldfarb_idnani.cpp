@@ -499,6 +499,31 @@ TEST(GoldfarbIdnani, RandomInfeasibleProblemsAreReported) {
 
 // ------------------------------------------------------------------ invalid
 
+TEST(GoldfarbIdnani, AControllerStepWithNearlyOppositeRowsIsNotCalledOptimal) {
+  // Two soft collision rows whose normals differ by 1e-3 (the gripper straddling
+  // a capsule) and the joints' acceleration bounds leave no feasible point. The
+  // dual steps along the nearly dependent normal reached x ~ 1e14 whose rows and
+  // bounds no longer held, and the solve said kOptimal: the controller integrated
+  // that acceleration and its observed object flew off.
+  QpProblem p;
+  ASSERT_TRUE(test::loadQpText(std::string(HANDOVER_SOURCE_DIR) +
+                                   "/tests/control/qp/data/nearly_inconsistent_collision_rows.txt", p));
+  GoldfarbIdnaniSolver s;
+  Eigen::VectorXd x(p.n);
+  const QpStatus status = solveFresh(p, x, s);
+  if (status == QpStatus::kOptimal) {
+    EXPECT_LE(test::largestViolation(p, x), 1e-6) << "an optimum that violates its rows";
+  } else {
+    EXPECT_EQ(status, QpStatus::kInfeasible);
+  }
+  // and it is infeasible indeed: rows 9 and 10 (both C x >= c_lb) need their
+  // sum to reach c_lb[9] + c_lb[10], more than it can inside the bounds
+  const Eigen::RowVectorXd sum = p.C.row(9) + p.C.row(10);
+  double reach = 0.0;
+  for (int j = 0; j < p.n; ++j) reach += std::abs(sum[j]) * std::max(std::abs(p.x_lb[j]), std::abs(p.x_ub[j]));
+  EXPECT_LT(reach, p.c_lb[9] + p.c_lb[10]);
+}
+
 TEST(GoldfarbIdnani, InvalidInputsAreReported) {
   std::mt19937 rng(3);
   RandomQpSpec spec;

@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <string>
 
 #include "control/qp/goldfarb_idnani.hpp"
 #include "control/qp/soft_row_relaxation.hpp"
+#include "tests/control/qp/qp_test_problems.hpp"
 
 namespace handover::control {
 namespace {
@@ -87,6 +89,24 @@ TEST(SoftRowRelaxation, TwoSidedSoftRowWidensBothSides) {
   ASSERT_EQ(f.relaxation.solve(f.p, f.solver, f.x), QpStatus::kOptimal);
   EXPECT_NEAR(f.relaxation.slack(), 3.0, 1e-6);
   EXPECT_NEAR(f.x[0], 4.0, 1e-6);
+}
+
+TEST(SoftRowRelaxation, AControllerStepWithNearlyOppositeRowsIsRelaxed) {
+  // the step of tests/control/qp/test_goldfarb_idnani.cpp's nearly opposite rows:
+  // infeasible as it stands, held by widening its soft collision rows only
+  QpProblem p;
+  ASSERT_TRUE(test::loadQpText(std::string(HANDOVER_SOURCE_DIR) +
+                                   "/tests/control/qp/data/nearly_inconsistent_collision_rows.txt", p));
+  GoldfarbIdnaniSolver solver;
+  solver.reserve(SoftRowRelaxation::solverVars(p.n), 0, SoftRowRelaxation::solverRowsIn(p.n_in));
+  SoftRowRelaxation relaxation;
+  relaxation.reserve(p.n, 0, p.n_in);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(p.n);
+  ASSERT_EQ(solver.solve(p, x), QpStatus::kInfeasible);
+  ASSERT_EQ(relaxation.solve(p, solver, x), QpStatus::kOptimal);
+  EXPECT_GT(relaxation.slack(), 0.0);
+  EXPECT_LE(test::largestViolation(p, x, relaxation.slack()), 1e-6);
+  EXPECT_LT(x.cwiseAbs().maxCoeff(), 100.0);  // accelerations of the scale of the bounds, not 1e14
 }
 
 TEST(SoftRowRelaxation, RefusesAProblemOfAnotherSize) {
