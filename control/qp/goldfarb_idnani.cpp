@@ -26,9 +26,10 @@ constexpr double kRPositive = 1e-12;
 // Warm-start multipliers below -kDual * (1 + max|u|) are genuinely negative.
 constexpr double kDual = 1e-10;
 // The returned point must satisfy every side to this fraction of the side's
-// own magnitude, sum_j |n_j x_j| + |b| (the scale of its rounding): a solve
-// that stepped along a nearly dependent normal reaches points 1e14 away whose
-// rows no longer hold, and must not be called optimal.
+// own scale, |n| + sum_j |n_j x_j| + |b| (the solver's tolerance convention
+// plus the rounding of n'x): a solve that stepped along a nearly dependent
+// normal reaches points 1e14 away whose rows no longer hold, and must not be
+// called optimal.
 constexpr double kVerify = 1e-7;
 
 bool isEqualityKind(QpRowKind k) {
@@ -593,24 +594,22 @@ bool GoldfarbIdnaniSolver::primalFeasible() const {
   const int n = n_;
   const auto x = x_.head(n);
   if (!x.allFinite()) return false;
+  // v within [lo, hi] up to kVerify * (scale + |side|)
   auto holds = [](double v, double lo, double hi, double scale) {
-    const double tol = kVerify * scale;
-    return (!hasLowerSide(lo) || v >= lo - tol - kVerify * std::abs(lo)) &&
-           (!hasUpperSide(hi) || v <= hi + tol + kVerify * std::abs(hi));
+    return (!hasLowerSide(lo) || v >= lo - kVerify * (scale + std::abs(lo))) &&
+           (!hasUpperSide(hi) || v <= hi + kVerify * (scale + std::abs(hi)));
   };
   for (int i = 0; i < p.n_eq; ++i) {
-    const double v = p.A_eq.row(i).dot(x);
-    const double scale = p.A_eq.row(i).cwiseProduct(x.transpose()).cwiseAbs().sum();
-    if (!holds(v, p.b_eq[i], p.b_eq[i], scale)) return false;
+    const double scale = eq_norm_[i] + p.A_eq.row(i).cwiseProduct(x.transpose()).cwiseAbs().sum();
+    if (!holds(p.A_eq.row(i).dot(x), p.b_eq[i], p.b_eq[i], scale)) return false;
   }
   for (int i = 0; i < p.n_in; ++i) {
     if (row_type_[i] == kFree) continue;
-    const double v = p.C.row(i).dot(x);
-    const double scale = p.C.row(i).cwiseProduct(x.transpose()).cwiseAbs().sum();
-    if (!holds(v, p.c_lb[i], p.c_ub[i], scale)) return false;
+    const double scale = row_norm_[i] + p.C.row(i).cwiseProduct(x.transpose()).cwiseAbs().sum();
+    if (!holds(p.C.row(i).dot(x), p.c_lb[i], p.c_ub[i], scale)) return false;
   }
   for (int j = 0; j < n; ++j)
-    if (!holds(x[j], p.x_lb[j], p.x_ub[j], std::abs(x[j]))) return false;
+    if (!holds(x[j], p.x_lb[j], p.x_ub[j], 1.0 + std::abs(x[j]))) return false;
   return true;
 }
 
