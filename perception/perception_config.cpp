@@ -59,6 +59,7 @@ void parseReach(const YamlReader& r, ReachPredictorSettings& s) {
   if (auto v = r.optionalChild("lead_full")) s.lead_full = v->checkRange(v->asDouble(), 0.0, 1.0);
   if (s.lead_full < s.lead_start) r.fail("lead_full must be at least lead_start");
   if (auto v = r.optionalChild("max_residual")) s.max_residual = v->checkRange(v->asDouble(), 0.0, 1.0);
+  if (auto v = r.optionalChild("restart_settle")) s.restart_settle = v->checkRange(v->asDouble(), 0.0, 2.0);
   r.finish();
 }
 
@@ -86,6 +87,7 @@ PerceptionConfig parsePerceptionConfig(const YamlReader& root) {
   if (auto v = root.optionalChild("gates")) parseGates(*v, e.gate);
   if (auto v = root.optionalChild("blend_time")) c.blend_time = v->checkRange(v->asDouble(), 0.0, 5.0);
   if (auto v = root.optionalChild("reach_prediction")) parseReach(*v, c.reach);
+  c.reach.restart_gap = e.gate.reseed_gap;  // the gap after which the estimator restarts its track
   root.finish();
   return c;
 }

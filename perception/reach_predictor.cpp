@@ -18,7 +18,8 @@ ReachPredictor::ReachPredictor(const ReachPredictorSettings& settings)
 
 void ReachPredictor::reset() {
   head_ = count_ = 0;
-  rest_time_ = onset_time_ = -1.0;
+  rest_time_ = onset_time_ = resume_time_ = -1.0;
+  awaiting_rest_ = false;
   pred_ = ReachPrediction{};
 }
 
@@ -26,7 +27,11 @@ void ReachPredictor::add(double t, const Eigen::Isometry3d& pose, double speed) 
   if (count_ > 0) {
     const double last = at(count_ - 1).t;
     if (t < last + settings_.sample_period) return;
-    if (t - last > settings_.window) reset();
+    if (t - last > std::min(settings_.window, settings_.restart_gap)) {
+      reset();
+      awaiting_rest_ = true;
+      resume_time_ = t + settings_.restart_settle;
+    }
   }
   const int cap = static_cast<int>(buf_.size());
   if (count_ == cap) {
@@ -36,6 +41,18 @@ void ReachPredictor::add(double t, const Eigen::Isometry3d& pose, double speed) 
   buf_[(head_ + count_) % cap] = Sample{t, pose.translation(), Eigen::Quaterniond(pose.linear())};
   ++count_;
 
+  if (awaiting_rest_) {
+    // after a gap: no reach until the hand rests (the restarted track's speed
+    // is its own motion model's, 0 at first, until restart_settle has passed)
+    if (t >= resume_time_ && speed < settings_.rest_speed) {
+      awaiting_rest_ = false;
+    } else {
+      pred_.reaching = false;
+      pred_.lead = pred_.phase = pred_.residual = 0.0;
+      pred_.end = pose;
+      return;
+    }
+  }
   if (rest_time_ < 0.0 || speed < settings_.rest_speed) {
     // at rest (or the first sample): the end is where the hand is
     rest_time_ = t;
@@ -195,7 +212,10 @@ void ReachPredictor::fit(double speed) {
   // a hand faster than the fitted reach allows is going on, not stopping there (lag and noise: 1.5 v + 0.1)
   const double u = std::clamp(pred_.phase, 0.0, 1.0);
   const double fitted_speed = d.norm() / best_T * 30.0 * u * u * (1.0 - u) * (1.0 - u);
-  const bool consistent = pred_.residual <= settings_.max_residual && speed <= 1.5 * fitted_speed + 0.1;
+  // a best duration within a grid step of the range's edge is no minimum the range brackets
+  const bool bracketed = best_T > settings_.min_duration * ratio && best_T < settings_.max_duration / ratio;
+  const bool consistent =
+      bracketed && pred_.residual <= settings_.max_residual && speed <= 1.5 * fitted_speed + 0.1;
   pred_.lead = consistent ? ramp : 0.0;
 }
 

@@ -13,8 +13,15 @@
 // `lead` (0..1) says how far to trust the end: 0 before the fitted phase
 // reaches lead_start, ramping to 1 at lead_full (before the speed peak D and
 // T are not separable), and 0 when the fit's RMS residual exceeds
-// max_residual or the hand moves faster than the fitted profile allows (not a
-// minimum-jerk reach: wandering, a hand changing its mind).
+// max_residual, the hand moves faster than the fitted profile allows (not a
+// minimum-jerk reach: wandering, a hand changing its mind), or the best
+// duration lies at the edge of [min_duration, max_duration] (no minimum
+// inside the durations a reach takes: the fit explains nothing).
+// A gap in the samples longer than restart_gap (the estimator then restarts
+// its track at rest: plausibility_gate.hpp reseed_gap) loses the reach: its
+// onset and course are unknown, and the restarted track's speed is not the
+// hand's for a while. No reach is fitted again until the hand has rested,
+// judged from restart_settle after the gap on.
 // ledPose() moves a pose the way the hand moves from now to its end, by lead.
 //
 // World frame, m, s. add() fits (~0.1 ms, not for the 1 ms step: call it from
@@ -38,6 +45,8 @@ struct ReachPredictorSettings {
   double lead_start = 0.45;     ///< fitted phase (0..1) from which the end point is trusted at all
   double lead_full = 0.65;      ///< fitted phase from which it is trusted fully
   double max_residual = 0.02;   ///< m, RMS of the fit beyond which the motion is no minimum-jerk reach
+  double restart_gap = 0.25;    ///< s between samples beyond which the reach is lost (the estimator's reseed_gap)
+  double restart_settle = 0.1;  ///< s after such a gap before the speed tells a rest
 };
 
 struct ReachPrediction {
@@ -86,6 +95,8 @@ class ReachPredictor {
   std::vector<Sample> buf_;  ///< ring buffer, capacity window / sample_period + 1
   int head_ = 0, count_ = 0;
   double rest_time_ = -1.0;  ///< s, latest sample at rest (-1: none yet)
+  double resume_time_ = -1.0;  ///< s: after a gap, the speed tells a rest from here on
+  bool awaiting_rest_ = false;  ///< a gap lost the reach: none until the hand rests
   double onset_time_ = -1.0;
   ReachPrediction pred_;
 };

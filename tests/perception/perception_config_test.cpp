@@ -62,3 +62,12 @@ TEST(PerceptionConfig, ReadsEverySectionAndRejectsBadValues) {
   EXPECT_NE(errorOf("kalman: {acceleration_noise: 0}\n").find("acceleration_noise"), std::string::npos);
   EXPECT_NE(errorOf("prediction_horizon: 2\n").find("prediction_horizon"), std::string::npos);
 }
+
+TEST(PerceptionConfig, TheReachIsLostAfterTheGapThatRestartsTheTrack) {
+  // one gap for both: the estimator restarts its track at rest, the reach predictor loses the reach
+  const PerceptionConfig c = parse("gates: {reseed_gap: 0.4}\nreach_prediction: {restart_settle: 0.2}\n");
+  EXPECT_DOUBLE_EQ(c.reach.restart_gap, 0.4);
+  EXPECT_DOUBLE_EQ(c.reach.restart_settle, 0.2);
+  EXPECT_NE(errorOf("reach_prediction: {restart_settle: -1}\n").find("restart_settle"), std::string::npos);
+  EXPECT_NE(errorOf("reach_prediction: {restart_gap: 0.3}\n").find("restart_gap"), std::string::npos);  // not its own key
+}

@@ -125,5 +125,51 @@ TEST(ReachPredictor, ComingToRestEndsTheReach) {
   EXPECT_LT((p.prediction().end.translation() - r.to).norm(), 1e-6);
 }
 
+TEST(ReachPredictor, AGapInTheSamplesLosesTheReachUntilTheHandRests) {
+  // the person unseen for 0.4 s mid-reach (longer than the estimator's reseed gap):
+  // its track restarts at rest, so the first speeds after the gap are 0 and rise
+  // over a few samples. Neither a rest nor the start of a new reach: no end is
+  // trusted until the hand has rested
+  ReachPredictor p;
+  Reach r;
+  const double gap_from = r.t0 + 0.3 * r.T, gap_to = gap_from + 0.4;
+  feed(p, r, 0.0, gap_from);
+  double lead_after_gap = 0.0;
+  for (double t = gap_to; t <= r.t0 + r.T - 0.05; t += 0.001) {
+    const double restarted_speed = r.speed(t) * std::min(1.0, (t - gap_to) / 0.05);  // the filter's rise
+    p.add(t, r.pose(t), restarted_speed);
+    lead_after_gap = std::max(lead_after_gap, p.prediction().lead);
+  }
+  EXPECT_EQ(lead_after_gap, 0.0) << "a reach fitted from a restart that was no rest";
+  EXPECT_FALSE(p.prediction().reaching);
+  // the hand rests: the next reach is fitted again
+  feed(p, r, r.t0 + r.T - 0.05, r.t0 + r.T + 0.3);
+  Reach next;
+  next.from = r.to;
+  next.to = r.to + Eigen::Vector3d(0.0, -0.25, 0.05);
+  next.t0 = r.t0 + r.T + 0.3;
+  next.turn = 0.0;
+  feed(p, next, next.t0, next.t0 + 0.7 * next.T);
+  EXPECT_EQ(p.prediction().lead, 1.0);
+  EXPECT_LT((p.prediction().end.translation() - next.to).norm(), 0.01);
+}
+
+TEST(ReachPredictor, AFitAtTheEdgeOfTheDurationsIsNotTrusted) {
+  // a hand drifting in over 6 s, twice the longest reach fitted: the best
+  // duration sits at max_duration, which brackets no minimum
+  ReachPredictorSettings s;
+  ReachPredictor p(s);
+  Reach slow;
+  slow.T = 2.0 * s.max_duration;
+  slow.to = slow.from + Eigen::Vector3d(-0.9, -0.3, 0.5);  // fast enough to count as a reach
+  double worst = 0.0;
+  for (double t = 0.0; t <= slow.t0 + 0.8 * slow.T; t += 0.001) {
+    p.add(t, slow.pose(t), slow.speed(t));
+    if (p.prediction().lead > 0.0) worst = std::max(worst, p.prediction().duration);
+  }
+  ASSERT_TRUE(p.prediction().reaching);
+  EXPECT_EQ(worst, 0.0) << "trusted a fit of duration " << worst << " s";
+}
+
 }  // namespace
 }  // namespace handover::perception
