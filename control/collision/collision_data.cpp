@@ -18,8 +18,6 @@ CollisionData::CollisionData(const CollisionModel& model)
       rule_enabled(model.rule_enabled),
       results(model.pairs.size()),
       last_normal(model.pairs.size(), Vector3::UnitZ()),
-      has_last_normal(model.pairs.size(), false),
-      was_off(model.pairs.size(), true),
-      awaiting_separation(model.pairs.size(), false) {}
+      has_last_normal(model.pairs.size(), false) {}
 
 }  // namespace handover::control

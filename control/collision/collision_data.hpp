@@ -40,13 +40,6 @@ struct CollisionData {
   std::vector<PairResult> results;    ///< one per CollisionModel::pairs entry
   std::vector<Vector3> last_normal;   ///< per pair: kept for penetrating cycles
   std::vector<bool> has_last_normal;
-  /// per pair: its rule was off at the last update (a switch on is seen by the next one)
-  std::vector<bool> was_off;
-  /// per pair with the object: switched on while the robot was inside it (the
-  /// object the fingers just let go of, or reopened around), so it acts only
-  /// once they have separated; the fingers leave it the way they came, not
-  /// pushed out along whichever normal the overlap gives
-  std::vector<bool> awaiting_separation;
   int num_active = 0;                 ///< active pairs this cycle
   int num_narrow = 0;                 ///< pairs that reached the FCL narrow phase this cycle
 };

@@ -96,17 +96,10 @@ void updateCollisions(const CollisionModel& cm, CollisionData& cd, const Model& 
     const CollisionPair& pair = cm.pairs[k];
     PairResult& res = cd.results[k];
     res.active = false;
-    if (!cd.rule_enabled[pair.rule]) {
-      cd.was_off[k] = true;
-      continue;
-    }
+    if (!cd.rule_enabled[pair.rule]) continue;
     const int ia = pair.robot_body, io = pair.other_body;
     const CollisionBody& a = cm.bodies[ia];
     const CollisionBody& o = cm.bodies[io];
-    if (cd.was_off[k]) {  // switched on: the object waits until the robot is out of it
-      cd.was_off[k] = false;
-      cd.awaiting_separation[k] = o.kind == CollisionBodyKind::kObject;
-    }
     if (o.isPerson() && !env.person_valid) continue;
     if (o.kind == CollisionBodyKind::kHumanTrunk && !env.trunk_valid) continue;
     if (o.kind == CollisionBodyKind::kObject && !env.object_valid) continue;
@@ -115,10 +108,7 @@ void updateCollisions(const CollisionModel& cm, CollisionData& cd, const Model& 
     // broad phase: skip pairs that cannot come within reach of the damper
     const double radii = a.radius + o.radius + pair.margin;
     const double lower = coreLowerBound(cd, a, ia, o, io) - radii;
-    if (lower > pair.damper.i_dist + cm.broadphase_margin) {
-      cd.awaiting_separation[k] = false;
-      continue;
-    }
+    if (lower > pair.damper.i_dist + cm.broadphase_margin) continue;
 
     // narrow phase on the cores
     ++cd.num_narrow;
@@ -144,10 +134,6 @@ void updateCollisions(const CollisionModel& cm, CollisionData& cd, const Model& 
     }
     cd.last_normal[k] = n;
     cd.has_last_normal[k] = true;
-    if (cd.awaiting_separation[k]) {
-      if (res.penetrating || D - radii <= 0.0) continue;  // still inside: no row yet
-      cd.awaiting_separation[k] = false;
-    }
 
     res.active = true;
     ++cd.num_active;

@@ -287,64 +287,6 @@ pairs:
   for (int k = 0; k < cm.numPairs(); ++k) EXPECT_FALSE(cd.results[k].active) << cm.pairLabel(k);
 }
 
-// The object the fingers just let go of (a give) is switched on as an obstacle
-// with the gripper still inside its hull: no rows until they have separated
-// (the fingers leave it the way they came, BackOut), then rows as for any
-// object, also when the gripper comes back into it.
-TEST(CollisionDistances, AnObjectSwitchedOnAroundTheGripperActsOnceTheyHaveSeparated) {
-  const Model& m = pandaModel();
-  CollisionConfig cfg = parseCollisionConfig(R"(
-defaults: {iDist: 0.05, sDist: 0.005}
-pairs:
-  - {name: object_gripper, robot: [panda_hand*, panda_*finger], other: object}
-)",
-                                             "object.yaml");
-  cfg.object.shape.kind = ShapeSpec::Kind::kBox;
-  cfg.object.shape.size = Vector3(0.06, 0.06, 0.20);
-  const CollisionModel cm = buildCollisionModel(m, cfg);
-  const int rule = cm.ruleIndex("object_gripper");
-  CollisionData cd(cm);
-  Data data(m);
-  forwardKinematics(m, data, readyPose(), Vector7::Zero());
-  const Isometry tcp = framePlacement(m, data, m.frameId("tcp"));
-  CollisionEnvironment env;
-  env.object_valid = true;
-  auto rows = [&] {
-    updateCollisions(cm, cd, m, data, env);
-    int n = 0;
-    for (int k = 0; k < cm.numPairs(); ++k) n += cd.results[k].active ? 1 : 0;
-    return n;
-  };
-  auto deepest = [&] {
-    double d = 1e9;
-    for (int k = 0; k < cm.numPairs(); ++k)
-      if (cd.results[k].active) d = std::min(d, cd.results[k].distance);
-    return d;
-  };
-  const Vector3 between_fingers = tcp.translation();  // the object where the fingers held it
-  const Vector3 below = tcp.translation() - Vector3(0.0, 0.0, 0.10 + 0.03);  // 3 cm below the fingertips
-  // held, then let go: the rule comes on with the fingers around the object
-  setRuleEnabled(cd, rule, false);
-  env.object.translation() = between_fingers;
-  EXPECT_EQ(rows(), 0);
-  setRuleEnabled(cd, rule, true);
-  EXPECT_EQ(rows(), 0) << "pushed out of the object it just let go of";
-  // the gripper backs out (here the object is moved away): rows once apart
-  env.object.translation() = below;
-  EXPECT_GT(rows(), 0);
-  EXPECT_GT(deepest(), 0.0);
-  // and coming back into it now meets the object's rows
-  env.object.translation() = between_fingers;
-  EXPECT_GT(rows(), 0);
-  EXPECT_LT(deepest(), 0.0);
-  // an object switched on while the gripper is clear acts at once
-  setRuleEnabled(cd, rule, false);
-  env.object.translation() = below;
-  rows();
-  setRuleEnabled(cd, rule, true);
-  EXPECT_GT(rows(), 0);
-}
-
 // The hand's way to the end of its reach: a capsule of the hand's size from
 // the grip point now to the predicted rest, with rows only while a forecast
 // is trusted and the person is seen.
