@@ -144,6 +144,12 @@ inline bool loadQpText(const std::string& path, QpProblem& p) {
   return static_cast<bool>(in);
 }
 
+/// The controller step whose two collision rows have nearly opposite normals
+/// (tests/control/qp/data: a give's gripper straddling a capsule; infeasible).
+inline std::string nearlyInconsistentRowsFile() {
+  return std::string(HANDOVER_SOURCE_DIR) + "/tests/control/qp/data/nearly_inconsistent_collision_rows.txt";
+}
+
 /// Largest amount by which x violates a row side or a bound of p (0 when
 /// every side holds), each row widened by `widen` where it is soft.
 inline double largestViolation(const QpProblem& p, const Eigen::VectorXd& x, double widen = 0.0) {

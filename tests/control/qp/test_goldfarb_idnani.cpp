@@ -506,8 +506,7 @@ TEST(GoldfarbIdnani, AControllerStepWithNearlyOppositeRowsIsNotCalledOptimal) {
   // bounds no longer held, and the solve said kOptimal: the controller integrated
   // that acceleration and its observed object flew off.
   QpProblem p;
-  ASSERT_TRUE(test::loadQpText(std::string(HANDOVER_SOURCE_DIR) +
-                                   "/tests/control/qp/data/nearly_inconsistent_collision_rows.txt", p));
+  ASSERT_TRUE(test::loadQpText(test::nearlyInconsistentRowsFile(), p));
   GoldfarbIdnaniSolver s;
   Eigen::VectorXd x(p.n);
   const QpStatus status = solveFresh(p, x, s);

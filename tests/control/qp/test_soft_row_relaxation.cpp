@@ -95,8 +95,7 @@ TEST(SoftRowRelaxation, AControllerStepWithNearlyOppositeRowsIsRelaxed) {
   // the step of tests/control/qp/test_goldfarb_idnani.cpp's nearly opposite rows:
   // infeasible as it stands, held by widening its soft collision rows only
   QpProblem p;
-  ASSERT_TRUE(test::loadQpText(std::string(HANDOVER_SOURCE_DIR) +
-                                   "/tests/control/qp/data/nearly_inconsistent_collision_rows.txt", p));
+  ASSERT_TRUE(test::loadQpText(test::nearlyInconsistentRowsFile(), p));
   GoldfarbIdnaniSolver solver;
   solver.reserve(SoftRowRelaxation::solverVars(p.n), 0, SoftRowRelaxation::solverRowsIn(p.n_in));
   SoftRowRelaxation relaxation;
