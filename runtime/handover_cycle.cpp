@@ -256,6 +256,8 @@ void HandoverCycle::assembleInput(double t, const io::ArmState& arm, const perce
   // this cycle's arm sensing
   in.q = arm.q;
   in.qd = arm.qd;
+  in.joint_limit_margin =
+      std::min((arm.q - controller_.model().q_min).minCoeff(), (controller_.model().q_max - arm.q).minCoeff());
   in.finger_width = arm.finger_width;
   in.wrench = arm.wrench;
   // the previous Controller::step's kinematics

@@ -1,5 +1,6 @@
 #include "fsm/handover/h2r_states.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "fsm/handover/grasp_funnel.hpp"
@@ -46,10 +47,13 @@ void WaitForPerson::configure(const YamlReader& def) {
   settle_speed_ = readPositive(def, "settle_speed", 5.0);
   settle_time_ = readRange(def, "settle_time", 0.0, 10.0);
   if (def.has("home_radius")) home_radius_ = readRange(def, "home_radius", 0.0, 1.0);
+  if (def.has("pull_hold_time") && !hand_) def.child("pull_hold_time").fail("only a give's wait (for the receiver) is taken from");
+  if (take_.configure(def)) pulled_ = declareOutput("Pulled");
 }
 
 void WaitForPerson::onStart(HandoverContext& ctx) {
   rest_.reset();
+  take_.restart();
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(hand_ ? ObservationTarget::kHand : ObservationTarget::kObject);
   ctrl().setPoseTarget(ctx.in.tcp_pose);  // at rest while waiting
@@ -58,6 +62,10 @@ void WaitForPerson::onStart(HandoverContext& ctx) {
 bool WaitForPerson::onRun(HandoverContext& ctx) {
   const HandoverParams& p = *ctx.params;
   const SensedBody& body = hand_ ? ctx.in.hand : ctx.in.object;
+  if (take_.taken(ctx)) {
+    setOutput(pulled_);
+    return true;
+  }
   // where the reach will end: a person bringing the object in is seen as coming once the
   // reach's end is known, before the object arrives. (Any motion toward the robot from anywhere
   // was tried: the noisy velocity of a person standing still started 33 of 300 approaches
@@ -74,7 +82,13 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   const bool at_home = home_radius_ > 0.0 && home_known && (pos - home).norm() < home_radius_;
   // resting, on its displacement (rest_window.hpp): a person holding the object still after a
   // dropout was never seen to rest by the noisy speed, and the robot gave up on them
-  if ((pos - p.workspace.center).norm() > p.reach_radius || at_home) {
+  // within reach: near the shoulder, or where the arm's own kinematics reach it (the planner's IK),
+  // not at the place the person held it before they offered it (a rest there is no offer)
+  constexpr double kRestPlace = 0.05;  // m, as WaitAgain's home_radius: still where it was first seen
+  const bool left_home = home_known && (pos - home).norm() > std::max(kRestPlace, home_radius_);
+  const bool within_reach =
+      (pos - p.workspace.center).norm() <= p.reach_radius || (left_home && latestPlan(ctx, hand_).valid);
+  if (!within_reach || at_home) {
     rest_.reset();
   } else {
     ready = rest_.rests(pos, ctx.time, settle_speed_, settle_time_) || ready;
@@ -100,10 +114,15 @@ void Approach::configure(const YamlReader& def) {
     lift_ = readRange(def, "lift", 0.0, 0.3);
     lift_speed_ = readPositive(def, "lift_speed", 2.0);
   }
+  if (def.has("pull_hold_time") && !hand_) def.child("pull_hold_time").fail("only an approach to the hand (a give) is taken from");
+  if (take_.configure(def)) pulled_ = declareOutput("Pulled");
+  stall_.configure(def);
 }
 
 void Approach::onStart(HandoverContext& ctx) {
   blind_ = false;
+  take_.restart();
+  stall_.restart(ctx.time);
   last_time_ = ctx.time;
   // take: meet the object where the person's reach will end. Not in a give: the receiver
   // reaches for the object, so going where their hand will stop met it halfway (seed 1: 10 gives
@@ -138,6 +157,7 @@ bool Approach::onRun(HandoverContext& ctx) {
   const SensedBody& body = hand_ ? ctx.in.hand : ctx.in.object;
   const bool blind = !fresh(body, ctx.params->max_data_age);
   if (blind && !blind_) {
+    stall_.restart(ctx.time);  // unseen: no progress is owed, and tracking resumes with the next sample
     ctrl().enableTracking(false);
     ctrl().setPoseTarget(ctx.in.tcp_pose);  // hold: no motion toward a person it cannot see
   } else if (!blind && blind_) {
@@ -145,10 +165,20 @@ bool Approach::onRun(HandoverContext& ctx) {
     trackTarget(ctx, ctrl(), hand_, standoff_, TrackingGains::kFollow, ctx.tracking_shift);
   }
   blind_ = blind;
+  // before the withdrawal: the hand that leaves with the object it pulled is the handover
+  if (take_.taken(ctx)) {
+    setOutput(pulled_);
+    return true;
+  }
   const double dt = ctx.time - last_time_;
   last_time_ = ctx.time;
   const bool arrived = ctx.params->arrive_speed <= 0.0 || body.velocity.head<3>().norm() <= ctx.params->arrive_speed;
-  if (!blind) {
+  const TrackingPlan& plan = latestPlan(ctx, hand_);
+  if (!blind && stall_.moving()) {
+    // in joint space to where the planner's IK reaches the target; tracking again from there
+    if (stall_.finished(ctx, arrived, plan.valid ? plan.index : -1))
+      trackTarget(ctx, ctrl(), hand_, ctx.tracking_standoff, TrackingGains::kFollow, ctx.tracking_shift);
+  } else if (!blind) {
     // the best reachable target as the person moves (a new grasp starts from the funnel's mouth)
     const bool switched = followPlan(ctx, ctrl(), hand_, standoff_);
     if (funnel_.enabled() && !switched) slideIn(ctx, arrived);
@@ -157,6 +187,7 @@ bool Approach::onRun(HandoverContext& ctx) {
     // still once it is known; a give's is the receiver's hand itself
     const double speed = (hand_ ? body.velocity : ctx.in.target_velocity).head<3>().norm();
     setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow, speed);
+    stall_.watch(ctx, ctrl(), hand_, positionError(ctx.in.tcp_pose, ctx.in.target_pose), arrived && plan.valid);
   }
   if (withdrawn(ctx, hand_)) {
     setOutput(withdrawn_);
@@ -167,7 +198,7 @@ bool Approach::onRun(HandoverContext& ctx) {
   // slide in); a give is near the presentation itself, not the descent's raised target (which stands
   // above the TCP while it rises)
   const Isometry near_target = hand_ ? trackedGraspFrame(ctx) : ctx.in.target_pose;
-  if (!blind && arrived && positionError(ctx.in.tcp_pose, near_target) <= near_distance_ &&
+  if (!blind && !stall_.moving() && arrived && positionError(ctx.in.tcp_pose, near_target) <= near_distance_ &&
       rotationError(ctx.in.tcp_pose, near_target) <= near_orientation_) {
     setOutput(near_);
     return true;

@@ -5,7 +5,9 @@
 
 #include "fsm/handover/grasp_funnel.hpp"
 #include "fsm/handover/handover_state.hpp"
+#include "fsm/handover/receiver_take.hpp"
 #include "fsm/handover/rest_window.hpp"
+#include "fsm/handover/stall_recovery.hpp"
 #include "fsm/handover/take_back.hpp"
 
 namespace handover::fsm {
@@ -14,7 +16,11 @@ namespace handover::fsm {
 /// TCP still and observes the object (or hand) until it is inside the
 /// workspace and either comes toward the robot faster than approach_speed,
 /// or rests (moves less than settle_speed * settle_time over settle_time:
-/// rest_window.hpp) within params.reach_radius.
+/// rest_window.hpp) within reach: within params.reach_radius, or farther
+/// where the grasp planner's inverse kinematics reaches it (a valid plan for
+/// the object or the hand) once it has left the place it was first seen (a
+/// person at the table's side holds the object out 0.81 m from the shoulder,
+/// in the arm's reach, and was waited for until they gave up).
 /// WaitForReceiver also needs HandoverInput::hand_open. With home_radius
 /// (m, optional; after an abort) a rest within that distance of where the
 /// body was first seen (the person's rest place, HandoverContext::home_*)
@@ -29,7 +35,8 @@ class WaitForPerson : public HandoverState {
 
  private:
   bool hand_;
-  int out_;
+  int out_, pulled_ = -1;
+  ReceiverTake take_;  ///< a give: a receiver who takes the object the robot waits with
   double approach_speed_ = 0.1, settle_speed_ = 0.05, settle_time_ = 0.3;
   double home_radius_ = 0.0;  ///< m, 0: a rest anywhere within reach counts
   RestWindow rest_;  ///< the body resting within reach
@@ -61,7 +68,10 @@ class WaitForPerson : public HandoverState {
 /// standoff_acceleration (m/s^2, optional: a smooth slide) and
 /// funnel_margin (share of the clearance, 0..1);
 /// a give's lift (m, optional, default 0: none) with lift_speed (m/s): the
-/// presentation is approached from above the receiver's hand
+/// presentation is approached from above the receiver's hand;
+/// stall_time (s, optional): an approach to a target at rest that makes no
+/// progress for that long goes on in joint space to the planner's
+/// configuration (stall_recovery.hpp)
 /// (presentation_descent.hpp).
 class Approach : public HandoverState {
  public:
@@ -76,7 +86,9 @@ class Approach : public HandoverState {
   void slideIn(HandoverContext& ctx, bool arrived);
 
   bool hand_;
-  int near_, withdrawn_;
+  int near_, withdrawn_, pulled_ = -1;
+  ReceiverTake take_;  ///< a give: a receiver who takes the object on its way to them
+  StallRecovery stall_;  ///< stall_time: a stalled approach goes on in joint space
   double near_distance_ = 0.1;
   double near_orientation_ = M_PI;  ///< rad
   double standoff_ = 0.0;           ///< m, pre-grasp distance along the approach axis

@@ -32,6 +32,8 @@ struct HandoverInput {
   // arm
   Vector7 q = Vector7::Zero();              ///< joint positions, rad
   Vector7 qd = Vector7::Zero();             ///< joint velocities, rad/s
+  /// rad: the smallest distance of a joint to its position limit (the model's)
+  double joint_limit_margin = 1e9;
   Isometry tcp_pose = Isometry::Identity(); ///< tool centre point in the world
   Vector6 tcp_velocity = Vector6::Zero();   ///< TCP [linear; angular], world axes
   double finger_width = 0.0;                ///< total finger opening, m

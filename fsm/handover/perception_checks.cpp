@@ -36,14 +36,14 @@ bool withdrawn(const HandoverContext& ctx, bool hand) {
   return toward > p.withdraw_speed && toward >= kHeading * body.velocity.head<3>().norm();
 }
 
-bool pulledBack(const HandoverContext& ctx, double force) {
+bool pulledBack(const HandoverContext& ctx, double force, double hand_speed) {
   if (!ctx.home_hand_known || !fresh(ctx.in.hand, ctx.params->max_data_age)) return false;
   Vector3 d = ctx.home_hand - ctx.in.hand.pose.translation();
   d.z() = 0.0;
   const double n = d.norm();
   if (n < 1e-9) return false;
   d /= n;
-  return ctx.interaction.dot(d) > force && ctx.in.hand.velocity.head<3>().dot(d) > 0.0;
+  return ctx.interaction.dot(d) > force && ctx.in.hand.velocity.head<3>().dot(d) > hand_speed;
 }
 
 double positionError(const Isometry& a, const Isometry& b) {

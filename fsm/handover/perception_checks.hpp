@@ -32,8 +32,9 @@ bool withdrawn(const HandoverContext& ctx, bool hand);
 /// their hand rested before it reached (HandoverContext::home_hand), and
 /// their hand, seen now, moves that way. Across the floor: the object's
 /// weight is modelled only once the robot carries it (before, it reads as a
-/// lift), and a pull down and away reads as that weight.
-bool pulledBack(const HandoverContext& ctx, double force);
+/// lift), and a pull down and away reads as that weight. `hand_speed` (m/s):
+/// how fast the hand must move that way (0: any motion that way).
+bool pulledBack(const HandoverContext& ctx, double force, double hand_speed = 0.0);
 /// Position error (m) and rotation angle error (rad) between two poses.
 double positionError(const Isometry& a, const Isometry& b);
 double rotationError(const Isometry& a, const Isometry& b);

@@ -15,11 +15,13 @@ void HoldReady::configure(const YamlReader& def) {
   settle_speed_ = readPositive(def, "settle_speed", 1.0);
   if (def.has("blocked_time")) blocked_time_ = readRange(def, "blocked_time", 0.0, 10.0);
   if (def.has("wait_for_person")) wait_for_person_ = readRange(def, "wait_for_person", 0.0, 5.0);
+  if (take_.configure(def)) pulled_ = declareOutput("Pulled");
 }
 
 void HoldReady::onStart(HandoverContext& ctx) {
   const HandoverParams& p = *ctx.params;
   blocked_since_ = -1.0;
+  take_.restart();
   ctrl().setGripper(p.gripper_close_width, p.gripForce(ctx.object.mass, ctx.comInTcp()));  // keep the grip
   if (!ctx.ledger->payloadSet()) ctrl().setPayload(ctx.object.mass, ctx.comInTcp());
   ctrl().enableTracking(false);
@@ -43,6 +45,10 @@ void HoldReady::startCarry(HandoverContext& ctx) {
 }
 
 bool HoldReady::onRun(HandoverContext& ctx) {
+  if (take_.taken(ctx)) {
+    setOutput(pulled_);
+    return true;
+  }
   if (!carrying_) {
     if (!ctx.in.hand.valid && ctx.time - started_ < wait_for_person_) return false;
     startCarry(ctx);

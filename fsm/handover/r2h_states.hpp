@@ -3,6 +3,7 @@
 
 #include "fsm/handover/handover_state.hpp"
 #include "fsm/handover/held_object_goal.hpp"
+#include "fsm/handover/receiver_take.hpp"
 #include "fsm/handover/rest_window.hpp"
 
 namespace handover::fsm {
@@ -17,8 +18,10 @@ namespace handover::fsm {
 /// (CarryRequest::receiver_stop): it is asked for once the person is seen,
 /// or after wait_for_person (s) without them (heading for the ready pose
 /// meanwhile).
+/// [Pulled] with pull_hold_time (s): a receiver who takes hold of the object
+/// on its way and pulls it (receiver_take.hpp).
 /// Keys: position_tolerance (m), settle_speed (m/s), blocked_time (s; absent: never),
-/// wait_for_person (s).
+/// wait_for_person (s), pull_hold_time (s; absent: off).
 class HoldReady : public HandoverState {
  public:
   HoldReady();
@@ -28,7 +31,8 @@ class HoldReady : public HandoverState {
   void onTeardown(HandoverContext& ctx) override;
 
  private:
-  int ready_;
+  int ready_, pulled_ = -1;
+  ReceiverTake take_;  ///< a receiver who takes the object on its way
   double pos_tol_ = 0.03, settle_speed_ = 0.03;
   /// s an arm held off by the person (HandoverInput::person_constraint_engaged)
   /// waits before it is ready where it is; negative = never

@@ -16,8 +16,9 @@ struct TakeBack {
   double since = -1.0;  ///< s, the pull began (< 0: none)
   void restart() { since = -1.0; }
   /// True once the pull has lasted `hold` s (never with take_back_force 0).
-  bool pulled(const HandoverContext& ctx, double hold) {
-    if (ctx.params->take_back_force <= 0.0 || !pulledBack(ctx, ctx.params->take_back_force)) {
+  /// `hand_speed` (m/s): how fast the hand must go (pulledBack).
+  bool pulled(const HandoverContext& ctx, double hold, double hand_speed = 0.0) {
+    if (ctx.params->take_back_force <= 0.0 || !pulledBack(ctx, ctx.params->take_back_force, hand_speed)) {
       since = -1.0;
       return false;
     }

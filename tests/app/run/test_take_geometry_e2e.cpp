@@ -13,7 +13,12 @@
 //   through the middle put the palm in the hand; no grasp was reachable,
 //   the gripper hung 4 cm below the unreachable pre-grasp until the person
 //   gave up. A box is now also grasped by either end of its third edge
-//   (control/grasp/shape_grasps.hpp).
+//   (control/grasp/shape_grasps.hpp);
+// - a bottle held out by a person beside the table, 0.81 m from the
+//   shoulder: past the offer's reach radius (0.80 m) but in the arm's reach;
+//   the robot waited for an offer it never saw until the person dropped it.
+//   A rest counts as an offer where the grasp planner's IK reaches it too
+//   (fsm/handover/h2r_states.hpp WaitForPerson).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -34,6 +39,10 @@ TEST(TakeGeometry, AnAngledGraspDeeperThanThePalmAllowsIsTakenAsDeepAsItDoes) {
 
 TEST(TakeGeometry, ABoxHeldOutPastTheWorkspaceEdgeIsTaken) {
   testing::expectSuccessAtTheFirstAttempt("box_past_edge", "h2r_box_past_workspace_edge.yaml", "/Approach");
+}
+
+TEST(TakeGeometry, AnOfferPastTheReachRadiusThatTheArmReachesIsTaken) {
+  testing::expectSuccessAtTheFirstAttempt("offer_far", "h2r_offer_beside_table_far.yaml", "/Approach");
 }
 
 TEST(TakeGeometry, ATallBoxHeldFarByItsMiddleIsTakenByItsFreeEnd) {

@@ -166,6 +166,7 @@ struct World {
   double last_sample = 0.0;
   bool hand_open = true;
   bool arm_stuck = false;   // the arm cannot move (a joint at its limit, a person in the way)
+  double joint_limit_margin = 1e9;  // rad, the arm's nearest joint to its position limit
   double share = -1.0;      // >= 0: the load share the estimator reports while the fingers hold (a weight coming over)
   Vector6 tool_contact = Vector6::Zero();  // what touches the gripper: [force; torque about the TCP], world
   TrackingPlan object_plan;  // what a grasp planner would report (invalid: none)
@@ -240,6 +241,7 @@ struct World {
     in.time = time;
     in.tcp_pose = tcp;
     in.tcp_velocity.head<3>() = tcp_vel;
+    in.joint_limit_margin = joint_limit_margin;
     in.finger_width = width;
     const bool robot_carries = robot_grip && !person_holds;
     Vector3 f(0, 0, -(kHandMass + (robot_carries ? mass : 0.0)) * 9.81);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "fsm/handover/perception_checks.hpp"
+#include "fsm/handover/receiver_take.hpp"
 
 namespace handover::fsm {
 namespace {
@@ -105,6 +106,35 @@ TEST(Withdrawn, AHandOnTheWorkspacesEdgeIsWithdrawnOnlyOnceOutsideTheMargin) {
     EXPECT_EQ(inWorkspace(ctx, true), beyond < 0.0) << "the offer's region has no margin";
     EXPECT_EQ(withdrawn(ctx, true), beyond > params.withdraw_workspace_margin);
   }
+}
+
+// A receiver takes hold of what the robot carries where their grip point
+// meets its surface, wherever on the object that is: a book hanging 10 cm
+// below the fingers is held by a hand at its lower edge, not by one beside
+// the gripper 10 cm above it, nor by one 15 cm in front of it.
+TEST(HandAtHeldObject, TheGripPointCountsAgainstTheObjectsSurfaceNotTheTcp) {
+  HandoverParams params;
+  HandoverContext ctx;
+  ctx.params = &params;
+  ctx.object.shape.kind = io::ObjectShape::Kind::kBox;
+  ctx.object.shape.size = Vector3(0.14, 0.04, 0.20);
+  // held 6 cm above its centre, the gripper coming along the object's x
+  ctx.grasp.offset = Eigen::Translation3d(0.0, 0.0, 0.06) * Eigen::AngleAxisd(M_PI / 2, Vector3::UnitY());
+  ctx.in.tcp_pose = Eigen::Translation3d(0.45, 0.0, 0.40) * Eigen::AngleAxisd(M_PI / 2, Vector3::UnitY());
+  ctx.in.hand.valid = true;
+  ctx.in.hand.age = 0.0;
+  const Isometry object = ctx.in.tcp_pose * ctx.objectInTcp();
+  ASSERT_LT((object.translation() - Vector3(0.45, 0.0, 0.34)).norm(), 1e-9);
+  const auto at = [&](const Vector3& p) {
+    ctx.in.hand.pose.translation() = p;
+    return handAtHeldObject(ctx, 0.05);
+  };
+  EXPECT_TRUE(at(Vector3(0.45, 0.04, 0.26)));   // at its lower edge, beside it
+  EXPECT_TRUE(at(Vector3(0.45, 0.0, 0.21)));    // 3 cm under it
+  EXPECT_FALSE(at(Vector3(0.45, 0.0, 0.17)));   // 7 cm under it
+  EXPECT_FALSE(at(Vector3(0.60, 0.0, 0.34)));   // 15 cm in front of its centre (8 cm off its face)
+  ctx.in.hand.age = 1.0;                        // a hand not seen for a second holds nothing known
+  EXPECT_FALSE(at(Vector3(0.45, 0.04, 0.26)));
 }
 
 }  // namespace

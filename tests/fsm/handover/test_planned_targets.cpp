@@ -115,6 +115,52 @@ TEST(PlannedTargets, ApproachFollowsASwitchAndGraspCommits) {
   EXPECT_EQ(rig.fsm->context().grasp.index, 4);
 }
 
+// The arm held short of a planned target by a joint at its limit (the toy arm
+// is stuck) with the object at rest: after the approach's
+// stall_time without progress it moves in joint space to the planner's
+// configuration for its target (tracking off, the posture task alone), and
+// tracks again once that move is over. Without progress owed (the object still
+// brought in) nothing happens.
+TEST(PlannedTargets, AStalledApproachGoesOnInJointSpaceToThePlannersConfiguration) {
+  Rig rig;
+  rig.world.arm_stuck = true;
+  rig.world.joint_limit_margin = 0.04;  // rad: a joint at its limit holds it
+  offerUntilApproach(rig, sidePlan(3, 0.1));
+  ASSERT_TRUE(rig.runUntil([&] { return rig.world.hand_vel.norm() == 0.0; }, 5.0));  // the offer rests
+  const double rested = rig.world.time;
+  ASSERT_TRUE(rig.runUntil([&] { return !rig.ctl.tracking; }, 3.0)) << rig.fsm->activePath();
+  const double stall = rig.world.time - rested;
+  EXPECT_GT(stall, 0.3);
+  EXPECT_LT(stall, 1.5);
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "/Approach")) << rig.fsm->activePath();
+  EXPECT_FALSE(rig.ctl.pose_active);
+  ASSERT_TRUE(rig.ctl.posture_active);
+  // the configuration for the target it tracked: the pre-grasp while backed off, the grasp once slid in
+  const TrackingPlan& plan = rig.world.object_plan;
+  const Vector7& goal = rig.fsm->context().tracking_standoff > 0.0 ? plan.q_pre : plan.q_target;
+  EXPECT_TRUE(rig.ctl.posture.isApprox(goal));
+  // the toy arm's joints never get there: the move ends after its time, tracking the plan again
+  const double moving_since = rig.world.time;
+  ASSERT_TRUE(rig.runUntil([&] { return rig.ctl.tracking; }, 5.0)) << rig.fsm->activePath();
+  EXPECT_NEAR(rig.world.time - moving_since, 2.0, 0.01);  // 2 stall_time + 1 s
+  EXPECT_TRUE(rig.ctl.offset_planned);
+}
+
+// Held short with every joint free of its limits, something else holds the
+// arm (the object or the person in the way): a move in joint space would go
+// through them, so the approach keeps tracking.
+TEST(PlannedTargets, AnApproachHeldShortWithItsJointsFreeKeepsTracking) {
+  Rig rig;
+  rig.world.arm_stuck = true;
+  rig.world.joint_limit_margin = 0.3;
+  offerUntilApproach(rig, sidePlan(3, 0.1));
+  const int off_before = rig.ctl.count("tracking off");
+  rig.runFor(4.0);
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "/Approach")) << rig.fsm->activePath();
+  EXPECT_TRUE(rig.ctl.tracking);
+  EXPECT_EQ(rig.ctl.count("tracking off"), off_before);
+}
+
 TEST(PlannedTargets, WithoutAPlanTheDeclaredGraspIsLeftToTheController) {
   Rig rig;
   rig.world.moveHand(kMeet, 0.5);

@@ -160,6 +160,67 @@ TEST(HandoverR2H, ObjectTakenByAReceiverWhoHeldItEarlyIsConfirmedGone) {
   EXPECT_STREQ(rig.fsm->stats().outcome, "success");
 }
 
+/// The receiver's hand closes on the object where the robot carries it (3 cm
+/// under the TCP) and, 20 ms later, pulls it toward where the hand came from
+/// with `pull` N across the floor, the hand going that way at 0.3 m/s.
+void takeHoldOfTheCarriedObjectAndPull(Rig& rig, double pull) {
+  const Vector3 home = rig.world.hand;  // where the hand was first seen
+  rig.world.object_in_hand = Vector3(0.0, 0.0, 0.03);
+  rig.world.hand = rig.world.hand_goal = rig.world.tcp.translation() - rig.world.object_in_hand;
+  rig.world.person_holds = true;
+  rig.runFor(0.02);
+  Vector3 toward = home - rig.world.hand;
+  toward.z() = 0.0;
+  rig.world.pull = pull * toward.normalized();
+  rig.world.moveHand(home, 0.3);
+}
+
+// A receiver who takes the object from the robot waiting with it (the object
+// hanging into their reach at the ready pose) and pulls it away: that is the
+// handover. The robot held on against the pull, took the hand leaving with the
+// object for a withdrawal and lost it (an outsider's give of a book held by its
+// top, 2026-11-27: `timeout`, Lost).
+TEST(HandoverR2H, AReceiverWhoTakesTheObjectWhileTheRobotWaitsIsHandedIt) {
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+  takeHoldOfTheCarriedObjectAndPull(rig, 12.0);
+  ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 20.0)) << rig.fsm->activePath();
+  EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "HoldReady", "WaitForReceiver", "Release", "ConfirmGone",
+                                  "BackOut", "Retract", "Done"}));
+  EXPECT_STREQ(rig.fsm->stats().outcome, "success");
+  EXPECT_EQ(rig.fsm->stats().handovers, 1);
+  EXPECT_TRUE(rig.world.person_holds);
+  EXPECT_FALSE(rig.world.robot_grip);
+}
+
+// The same while the robot still carries the object to its ready pose.
+TEST(HandoverR2H, AReceiverWhoTakesTheObjectOnItsWayToTheReadyPoseIsHandedIt) {
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("HoldReady", 1.0)) << rig.fsm->activePath();
+  rig.runFor(0.3);
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "HoldReady")) << rig.fsm->activePath();
+  takeHoldOfTheCarriedObjectAndPull(rig, 12.0);
+  ASSERT_TRUE(rig.runUntilState("Release", 0.5)) << rig.fsm->activePath();
+  ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 20.0)) << rig.fsm->activePath();
+  EXPECT_EQ(rig.leaves(),
+            (Leaves{"SelectDirection", "HoldReady", "Release", "ConfirmGone", "BackOut", "Retract", "Done"}));
+  EXPECT_STREQ(rig.fsm->stats().outcome, "success");
+}
+
+// A hand at the object that pushes it toward the robot, or tugs below the
+// take-back force, is not taking it: the robot keeps its grip.
+TEST(HandoverR2H, AHandThatPushesOrBarelyTugsTheCarriedObjectIsNotTakingIt) {
+  for (const double pull : {-12.0, 6.0}) {
+    SCOPED_TRACE(pull);
+    Rig rig(true);
+    ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+    takeHoldOfTheCarriedObjectAndPull(rig, pull);
+    rig.runFor(0.5);
+    EXPECT_EQ(rig.ctl.count("gripper 0.08"), 0) << rig.fsm->activePath();
+    EXPECT_TRUE(rig.world.robot_grip);
+  }
+}
+
 TEST(HandoverR2H, SuccessfulGiveVisitsEveryPhase) {
   Rig rig(true);
   ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();

@@ -1,0 +1,54 @@
+// An approach that the arm's local motion cannot finish: following the
+// tracking task's gradient, a joint has run into its limit, and the TCP
+// makes no progress toward a target that the planner's
+// inverse kinematics does reach (side grasps of small, low objects: 20 cm
+// short for 7 s, the person gave up). The arm then moves in joint space to
+// the planner's configuration for the target (the posture task alone,
+// tracking off) and tracks again from there. RT safe.
+#pragma once
+
+#include <limits>
+
+#include "fsm/handover/controller_handle.hpp"
+#include "fsm/handover/handover_state.hpp"
+
+namespace handover::fsm {
+
+class StallRecovery {
+ public:
+  /// Reads the optional key stall_time (s): no progress toward the target
+  /// for that long is a stall. Absent: off.
+  void configure(const YamlReader& def);
+  void restart(double time);
+  /// Moving in joint space (tracking off).
+  bool moving() const { return moving_; }
+  /// One tracking cycle: `error` (m) from the TCP to the tracked target;
+  /// `settled` the target is at rest and planned. Starts the joint-space move
+  /// (to `hand` ? the presentation's : the grasp's IK configuration, the
+  /// pre-target's while backed off) when it stalled; true if it started.
+  bool watch(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double error, bool settled);
+  /// One joint-space cycle: true once the move is over (at the
+  /// configuration, too long, or the target moved or changed): the caller
+  /// tracks again.
+  bool finished(const HandoverContext& ctx, bool settled, int plan_index);
+
+ private:
+  /// m: less is no progress (the sensor's noise moves the target by mm)
+  static constexpr double kProgress = 0.01;
+  /// rad: every joint this near its goal has arrived
+  static constexpr double kArrived = 0.05;
+  /// rad: a joint this near its position limit holds the arm there (the
+  /// limit's damper); short of a target with every joint free, something
+  /// else holds it (the object, the person: a move in joint space went
+  /// through them)
+  static constexpr double kAtLimit = 0.1;
+  double stall_time_ = -1.0;
+  double best_ = std::numeric_limits<double>::infinity();
+  double best_time_ = 0.0;
+  double started_ = 0.0;
+  bool moving_ = false;
+  int index_ = -1;       ///< the plan's candidate when the move started
+  Vector7 goal_ = Vector7::Zero();
+};
+
+}  // namespace handover::fsm
