@@ -18,7 +18,11 @@
 //   shoulder: past the offer's reach radius (0.80 m) but in the arm's reach;
 //   the robot waited for an offer it never saw until the person dropped it.
 //   A rest counts as an offer where the grasp planner's IK reaches it too
-//   (fsm/handover/h2r_states.hpp WaitForPerson).
+//   (fsm/handover/h2r_states.hpp WaitForPerson);
+// - a low box taken from the side: the approach followed the tracking
+//   task's gradient until joint 6 sat at its limit short of the pre-grasp,
+//   and the person gave up; the stalled approach now goes on in joint space
+//   to the planner's configuration (fsm/handover/stall_recovery.hpp).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -43,6 +47,10 @@ TEST(TakeGeometry, ABoxHeldOutPastTheWorkspaceEdgeIsTaken) {
 
 TEST(TakeGeometry, AnOfferPastTheReachRadiusThatTheArmReachesIsTaken) {
   testing::expectSuccessAtTheFirstAttempt("offer_far", "h2r_offer_beside_table_far.yaml", "/Approach");
+}
+
+TEST(TakeGeometry, AnApproachStalledAtAJointLimitGoesOnInJointSpace) {
+  testing::expectSuccessAtTheFirstAttempt("side_box_low", "h2r_side_box_low_stalled.yaml", "/Approach");
 }
 
 TEST(TakeGeometry, ATallBoxHeldFarByItsMiddleIsTakenByItsFreeEnd) {
