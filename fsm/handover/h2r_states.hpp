@@ -70,8 +70,8 @@ class WaitForPerson : public HandoverState {
 /// a give's lift (m, optional, default 0: none) with lift_speed (m/s): the
 /// presentation is approached from above the receiver's hand;
 /// stall_time (s, optional): an approach to a target at rest that makes no
-/// progress for that long goes on in joint space to the planner's
-/// configuration (stall_recovery.hpp)
+/// progress for that long with a joint at its limit goes on in joint space
+/// to the planner's configuration (stall_recovery.hpp)
 /// (presentation_descent.hpp).
 class Approach : public HandoverState {
  public:

@@ -19,13 +19,13 @@ bool handAtHeldObject(const HandoverContext& ctx, double reach);
 /// The pull of a receiver who holds the carried object: pulledBack (the
 /// force across the floor toward where their hand came from, params.withdraw
 /// take_back_force, the hand moving that way faster than a hand at rest)
-/// with the hand at the object, for `hold_time` s. Off unless the state's definition has `pull_hold_time`.
+/// with the hand at the object, for `hold_time` s. Off unless the state's
+/// definition has `pull_hold_time`.
 class ReceiverTake {
  public:
   /// Reads the optional key pull_hold_time (s); true when it is there (the
   /// state then declares its output `Pulled`).
   bool configure(const YamlReader& def);
-  bool enabled() const { return enabled_; }
   void restart() { pull_.restart(); }
   /// True once the receiver has pulled the object they hold for the hold
   /// time (never when disabled). RT safe.

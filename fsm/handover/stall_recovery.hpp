@@ -1,9 +1,9 @@
 // An approach that the arm's local motion cannot finish: following the
-// tracking task's gradient, a joint has run into its limit, and the TCP
-// makes no progress toward a target that the planner's
-// inverse kinematics does reach (side grasps of small, low objects: 20 cm
-// short for 7 s, the person gave up). The arm then moves in joint space to
-// the planner's configuration for the target (the posture task alone,
+// tracking task's gradient, a joint has run into its limit, and the TCP makes
+// no progress toward a target that the planner's inverse kinematics does
+// reach (a low box taken from the side: joint 6 at its limit 4 cm short of
+// the pre-grasp until the person gave up). The arm then moves in joint space
+// to the planner's configuration for the target (the posture task alone,
 // tracking off) and tracks again from there. RT safe.
 #pragma once
 
