@@ -16,10 +16,12 @@ const Isometry& namedPose(const HandoverParams& p, const std::string& name) {
 constexpr double kDeg = M_PI / 180.0;
 }  // namespace
 
-SelectDirection::SelectDirection() : take_(declareOutput("Take")), give_(declareOutput("Give")) {}
+SelectDirection::SelectDirection()
+    : take_(declareOutput("Take")), give_(declareOutput("Give")), exchanged_(declareOutput("Exchanged")) {}
 
 bool SelectDirection::onRun(HandoverContext& ctx) {
-  setOutput(ctx.in.holds_object ? give_ : take_);
+  if (ctx.exchanged) setOutput(exchanged_);
+  else setOutput(ctx.in.holds_object ? give_ : take_);
   return true;
 }
 

@@ -6,14 +6,16 @@
 
 namespace handover::fsm {
 
-/// [Take, Give] Give when the controller says the gripper holds the object.
+/// [Take, Give, Exchanged] Give when the controller says the gripper holds
+/// the object; Exchanged once it has changed hands (HandoverContext::
+/// exchanged: the machine restarted after a safety stop in the retract).
 class SelectDirection : public HandoverState {
  public:
   SelectDirection();
   bool onRun(HandoverContext& ctx) override;
 
  private:
-  int take_, give_;
+  int take_, give_, exchanged_;
 };
 
 /// Final state, never done: holds the TCP where it is, tracking off, and

@@ -405,6 +405,7 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   }
   if (ctx.time - since_ < hold_time_) return false;
   ctrl().setPayload(ctx.object.mass, ctx.comInTcp());
+  ctx.exchanged = true;
   setOutput(released_);
   return true;
 }

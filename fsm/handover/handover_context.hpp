@@ -78,6 +78,11 @@ struct HandoverContext : Context {
   /// gives up (set once, by HandoverFsm::step, from the first valid sample).
   Vector3 home_hand = Vector3::Zero(), home_object = Vector3::Zero();
   bool home_hand_known = false, home_object_known = false;
+  /// The object changed hands (a take's release, a give's object confirmed
+  /// gone): all that is left is to stow; a restart after a safety stop must
+  /// not choose a direction from what the gripper holds (it offered a taken
+  /// object back to the person)
+  bool exchanged = false;
 
   /// Weight (N) added to the sensor since `baseline`, along gravity.
   double addedWeight(const Vector3& baseline) const {

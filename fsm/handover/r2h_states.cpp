@@ -209,6 +209,7 @@ bool ConfirmGone::onRun(HandoverContext& ctx) {
   if (since_ < 0.0) since_ = ctx.time;
   if (ctx.time - since_ < hold_time_) return false;
   ctrl().clearPayload();
+  ctx.exchanged = true;
   setOutput(gone_);
   return true;
 }

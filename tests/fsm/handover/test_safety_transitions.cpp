@@ -1,6 +1,10 @@
 // The safety layer of the handover machine: slow down and stop.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <memory>
+#include <string>
+
 #include "tests/fsm/handover/fake_world.hpp"
 
 namespace handover::fsm::test {
@@ -103,6 +107,72 @@ TEST(HandoverSafety, HandAtTheTrackingTargetIsNotAnIntrusionButTheForearmIs) {
   rig.world.arm_distance = 0.02;
   rig.step();
   EXPECT_EQ(rig.fsm->activePath(), "SafetyStop");
+}
+
+/// Stops the robot for 0.2 s (the person's forearm 2 cm away) and clears.
+void stopAndClear(Rig& rig) {
+  rig.world.arm_distance = 0.02;
+  rig.step();
+  ASSERT_EQ(rig.fsm->activePath(), "SafetyStop");
+  rig.runFor(0.2);
+  rig.world.arm_distance = 1.0;
+}
+
+bool visited(const Leaves& leaves, const std::string& leaf) {
+  return std::find(leaves.begin(), leaves.end(), leaf) != leaves.end();
+}
+
+// A stop after the object changed hands resumes with the stow: restarted from
+// the choice of direction, the robot read the taken object in its gripper as
+// one to give and offered it back to the person (and after a give, waited to
+// take an object from them).
+TEST(HandoverSafety, AStopAfterATakesReleaseResumesWithTheStowNotAGive) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  auto gripped_since = std::make_shared<double>(-1.0);
+  rig.person = [gripped_since](World& w) {  // lets go once gripped for 0.1 s, and withdraws
+    if (!w.robot_grip) return;
+    if (*gripped_since < 0) *gripped_since = w.time;
+    if (w.time - *gripped_since >= 0.1 && w.person_holds) {
+      w.person_holds = false;
+      w.moveHand(w.hand + Vector3(0.3, 0.0, 0.0), 0.5);
+    }
+  };
+  ASSERT_TRUE(rig.runUntilState("/Retract", 20.0)) << rig.fsm->activePath();
+  stopAndClear(rig);
+  ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 15.0)) << rig.fsm->activePath();
+  const Leaves leaves = rig.leaves();
+  EXPECT_EQ(Leaves(leaves.end() - 4, leaves.end()), (Leaves{"SafetyStop", "SelectDirection", "Stow", "Done"}));
+  EXPECT_FALSE(visited(leaves, "HoldReady"));
+  EXPECT_STREQ(rig.fsm->stats().outcome, "success");
+  EXPECT_EQ(rig.fsm->stats().handovers, 1);
+  EXPECT_TRUE(rig.world.robot_grip);
+}
+
+TEST(HandoverSafety, AStopAfterAGivesObjectIsGoneResumesWithTheStowNotATake) {
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+  rig.world.moveHand(Vector3(0.60, 0.0, 0.35), 0.5);
+  auto resting_since = std::make_shared<double>(-1.0);
+  rig.person = [resting_since](World& w) {  // takes the object resting in the hand, pulls, leaves with it
+    if (w.person_holds) {
+      w.pull = Vector3(5.0, 0.0, 0.0);
+      if (!w.robot_grip) w.moveHand(kAway, 0.3);
+      return;
+    }
+    const bool in_hand = (w.object - (w.hand + w.object_in_hand)).norm() < 0.01 && w.tcp_vel.norm() < 0.01;
+    if (!in_hand) return void(*resting_since = -1.0);
+    if (*resting_since < 0) *resting_since = w.time;
+    if (w.time - *resting_since >= 0.5) w.person_holds = true;
+  };
+  ASSERT_TRUE(rig.runUntilState("BackOut", 20.0)) << rig.fsm->activePath();
+  stopAndClear(rig);
+  ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 15.0)) << rig.fsm->activePath();
+  const Leaves leaves = rig.leaves();
+  EXPECT_EQ(Leaves(leaves.end() - 4, leaves.end()), (Leaves{"SafetyStop", "SelectDirection", "Stow", "Done"}));
+  EXPECT_FALSE(visited(leaves, "WaitForOffer"));
+  EXPECT_STREQ(rig.fsm->stats().outcome, "success");
+  EXPECT_EQ(rig.fsm->stats().handovers, 1);
 }
 
 TEST(HandoverSafety, NoInterruptOnceDone) {
