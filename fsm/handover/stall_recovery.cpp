@@ -14,15 +14,15 @@ void StallRecovery::restart(double time) {
   moving_ = false;
 }
 
-bool StallRecovery::watch(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double error, bool settled) {
-  if (stall_time_ <= 0.0) return false;
+void StallRecovery::watch(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double error, bool settled) {
+  if (stall_time_ <= 0.0) return;
   const TrackedChoice& c = trackedChoice(ctx, hand);
   if (!settled || !c.planned || error < best_ - kProgress || ctx.in.joint_limit_margin > kAtLimit) {
     best_ = settled ? error : std::numeric_limits<double>::infinity();
     best_time_ = ctx.time;
-    return false;
+    return;
   }
-  if (ctx.time - best_time_ < stall_time_) return false;
+  if (ctx.time - best_time_ < stall_time_) return;
   goal_ = ctx.tracking_standoff > 0.0 ? c.q_pre : c.q_target;
   index_ = c.index;
   moving_ = true;
@@ -30,7 +30,6 @@ bool StallRecovery::watch(HandoverContext& ctx, ControllerHandle& ctrl, bool han
   ctrl.enableTracking(false);
   ctrl.clearPoseTarget();
   ctrl.setPostureTarget(goal_);
-  return true;
 }
 
 bool StallRecovery::finished(const HandoverContext& ctx, bool settled, int plan_index) {
@@ -38,9 +37,7 @@ bool StallRecovery::finished(const HandoverContext& ctx, bool settled, int plan_
   // as long as the arm took to stall again: it moves, or it is no way out
   const bool too_long = ctx.time - started_ > 2.0 * stall_time_ + 1.0;
   if (!arrived && !too_long && settled && plan_index == index_) return false;
-  moving_ = false;
-  best_ = std::numeric_limits<double>::infinity();
-  best_time_ = ctx.time;
+  restart(ctx.time);  // progress is owed again from here
   return true;
 }
 

@@ -25,8 +25,8 @@ class StallRecovery {
   /// One tracking cycle: `error` (m) from the TCP to the tracked target;
   /// `settled` the target is at rest and planned. Starts the joint-space move
   /// (to `hand` ? the presentation's : the grasp's IK configuration, the
-  /// pre-target's while backed off) when it stalled; true if it started.
-  bool watch(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double error, bool settled);
+  /// pre-target's while backed off) when it stalled.
+  void watch(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double error, bool settled);
   /// One joint-space cycle: true once the move is over (at the
   /// configuration, too long, or the target moved or changed): the caller
   /// tracks again.
