@@ -65,11 +65,15 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
   runtime::CycleSettings cs = runtime::defaultCycleSettings();
   if (sc.config && !sc.config.IsNull()) cs.controller = control::parseControllerConfig(YamlReader(sc.config, sc.config_path, ""));
   cs.estimator.hand_T_object = sc.human.holds_object.value_or(Eigen::Isometry3d::Identity());
+  // the object as the robot holds it: a give's declared grasp deeper than the
+  // palm lets the object sit is held in front of the palm (the simulator and
+  // the controller both), never with the object inside the hand
+  const scenario::ObjectSpec held = robotHeldObject(sc, cs.grasp_selection.palm);
   cs.object.mass = sc.object.mass;
-  cs.object.grasp_in_object = sc.object.grasp;
-  cs.object.com_in_tcp = sc.object.grasp.inverse().translation();
+  cs.object.grasp_in_object = held.grasp;
+  cs.object.com_in_tcp = held.grasp.inverse().translation();
   cs.object.shape = scenario::primitiveShapeOf(sc.object);
-  cs.object_grasp = graspOffsetFor(sc.object);
+  cs.object_grasp = graspOffsetFor(held);
   cs.object_grasps = graspSpecsFor(sc.object, cs.grasp_selection.declared_preference, cs.gripper_open_width,
                                    cs.grasp_selection.palm);
   cs.collision.object = collisionShapeFor(sc.object);
@@ -128,7 +132,7 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
 
   // -- initial state --------------------------------------------------------
   const control::Vector7 q0 = sc.robot.start_q.value_or(cs.controller.posture.target);
-  const Eigen::Isometry3d tcp_T_object = sc.object.grasp.inverse();
+  const Eigen::Isometry3d tcp_T_object = held.grasp.inverse();
   const double hold_width = std::clamp(scenario::objectWidthAcrossFingers(sc.object), 0.0, cs.gripper_open_width);
   if (sc.robot.holds_object) sim.reset(q0, hold_width, tcp_T_object);
   else sim.reset(q0, cs.gripper_open_width);
@@ -283,13 +287,13 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
       f.hand_speed = tracker ? cycle.handVelocity().head<3>().norm() : hout.hand_speed;
       f.finger_width = arm.finger_width;
       f.min_human_distance = std::isfinite(d_human) ? d_human : 1e9;
-      const Eigen::Isometry3d grasp_true = obj_true.pose * sc.object.grasp;
+      const Eigen::Isometry3d grasp_true = obj_true.pose * held.grasp;
       const Eigen::Isometry3d tcp_true = sim.tcpPose();
       f.grasp_pos_error = (tcp_true.translation() - grasp_true.translation()).norm();
       if (grasp.has_free_axis) {
         // only the approach axis matters around a symmetry axis
         const Eigen::Vector3d a = (obj_true.pose.linear() * grasp.free_axis).normalized();
-        const Eigen::Vector3d b = (tcp_true.linear() * sc.object.grasp.linear().transpose() * grasp.free_axis).normalized();
+        const Eigen::Vector3d b = (tcp_true.linear() * held.grasp.linear().transpose() * grasp.free_axis).normalized();
         f.grasp_rot_error_deg = std::acos(std::clamp(a.dot(b), -1.0, 1.0)) * 180.0 / M_PI;
       } else {
         f.grasp_rot_error_deg = Eigen::AngleAxisd(tcp_true.linear().transpose() * grasp_true.linear()).angle() * 180.0 / M_PI;

@@ -85,4 +85,10 @@ std::vector<control::grasp::GraspSpec> graspSpecsFor(const scenario::ObjectSpec&
   return specs;
 }
 
+scenario::ObjectSpec robotHeldObject(const scenario::Scenario& sc, const control::grasp::PalmGeometry& palm) {
+  scenario::ObjectSpec held = sc.object;
+  if (sc.robot.holds_object) held.grasp = control::grasp::fitToPalm(scenario::primitiveShapeOf(sc.object), sc.object.grasp, palm);
+  return held;
+}
+
 }  // namespace handover::app

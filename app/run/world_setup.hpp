@@ -36,4 +36,10 @@ control::ObjectShapeSettings collisionShapeFor(const scenario::ObjectSpec& objec
 std::vector<control::grasp::GraspSpec> graspSpecsFor(const scenario::ObjectSpec& object, double declared_preference,
                                                      double gripper_opening, const control::grasp::PalmGeometry& palm);
 
+/// The scenario's object as the robot holds it: in a give (robot.holds_object)
+/// a declared grasp deeper than `palm` lets the object sit is moved back to
+/// where it does (palm_fit.hpp): the object rests against the palm, not in it.
+/// A take's object is returned as declared (the grasp planner fits its own).
+scenario::ObjectSpec robotHeldObject(const scenario::Scenario& sc, const control::grasp::PalmGeometry& palm);
+
 }  // namespace handover::app
