@@ -47,6 +47,13 @@ std::vector<cg::GraspSpec> presentationSpecs(const control::Isometry& presentati
 }
 }  // namespace
 
+control::Vector3 receiverPull(const perception::HumanEstimate& person) {
+  control::Vector3 d = person.upper_arm.translation() - person.hand.translation();
+  d.z() = 0.0;
+  const double n = d.norm();
+  return n > 1e-6 ? control::Vector3(d / n) : control::Vector3::Zero();
+}
+
 PersonKeeps personKeeps(const control::CollisionModel& model) {
   PersonKeeps k;
   for (const control::CollisionPair& p : model.pairs) {
@@ -199,6 +206,7 @@ void GraspPlanning::update(const perception::PerceptionEstimate& est, const cont
     // the arm from it; a presentation turned to keep the fingers off the forearm put link 7 at the chest)
     const int n = personObstacles(est.human, false, torso);
     for (int k = n - trunkObstacles(torso); k < n; ++k) obstacles_[static_cast<std::size_t>(k)].keep_only = true;
+    hand_.setPullDirection(receiverPull(est.human));
     copyChoice(hand_.update(est.human.hand, q, obstacles_.data(), n), hand_plan_);
   }
   object_plan_.valid = false;

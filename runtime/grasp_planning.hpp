@@ -52,6 +52,12 @@ struct PersonKeeps {
 /// each class of robot capsule and each part of the person.
 PersonKeeps personKeeps(const control::CollisionModel& model);
 
+/// Where a receiver pulls a presented object (world, unit, horizontal): back
+/// toward their shoulder, as people take an object to their body; zero when
+/// the shoulder is straight above the hand. The give's presentation keeps the open
+/// gripper out of that way (GraspSelector::setPullDirection).
+control::Vector3 receiverPull(const perception::HumanEstimate& person);
+
 struct GraspPlanningSettings {
   control::grasp::GraspSelectionConfig config;        ///< config/grasp_selection.yaml
   std::vector<control::grasp::GraspSpec> object_grasps;  ///< what the object admits (at least one)

@@ -39,6 +39,12 @@ ScoreTerms scoreConfiguration(const Model& model, int frame_id, const ChainPoses
   return t;
 }
 
+double exitBlock(const Isometry& grasp, const Vector3& pull) {
+  const double into_finger = std::abs(grasp.linear().col(1).dot(pull));
+  const double into_palm = std::min(1.0, 2.0 * std::max(0.0, -grasp.linear().col(2).dot(pull)));
+  return std::min(1.0, std::max(into_finger, into_palm));
+}
+
 double totalScore(const ScoreTerms& t, const ScoreWeights& w) {
   return w.joint_margin * t.joint_margin + w.manipulability * t.manipulability - w.motion * t.motion -
          w.clearance * t.clearance - w.shortfall * t.shortfall;

@@ -9,6 +9,8 @@
 //   clearance_penalty = max(0, 1 - clearance / clearance_ref), clearance (m) to the given obstacles
 //   shortfall         = min(1, (keepShortfall / shortfall_ref)^2): how far (m) the collision constraints hold
 //                       the arm short of q (the keeps of the obstacles the fingers do not work in)
+//   exit (give only, GraspSelector::setPullDirection) = exitBlock: how much of the receiver's pull the
+//                       open gripper blocks; subtracted with weight w_exit outside totalScore
 //
 // Saturating the margin says "0.5 rad from every limit is enough": beyond it,
 // motion and manipulability decide. Real-time safe.
@@ -29,6 +31,7 @@ struct ScoreWeights {
   double clearance_ref = 0.15;       ///< m, obstacle distance below which the penalty starts
   double shortfall = 2.0;
   double shortfall_ref = 0.02;       ///< m held short that costs the whole weight
+  double exit = 1.0;                 ///< weight of the blocked pull (give presentations)
 };
 
 struct ScoreTerms {
@@ -38,6 +41,7 @@ struct ScoreTerms {
   double clearance = 0.0;        ///< penalty in [0, 1] (1 = touching or overlapping)
   double shortfall = 0.0;        ///< penalty in [0, 1] (1 = held shortfall_ref or more short)
   double preference = 0.0;       ///< the candidate's spec's preference (GraspSpec), in the total
+  double exit = 0.0;             ///< penalty in [0, 1] (1 = the pull drives the object into a finger or the palm)
   double total = 0.0;
 };
 
@@ -52,6 +56,17 @@ double manipulability(const Matrix6x7& J);
 ScoreTerms scoreConfiguration(const Model& model, int frame_id, const ChainPoses& poses, const Vector7& q,
                               const Vector7& q_now, const ObstacleCapsule* obstacles, int num_obstacles,
                               const ScoreWeights& w);
+
+/// [0, 1]: how much of a pull along `pull` (world, unit) the open gripper at
+/// `grasp` (world; y = the fingers' closing axis, z = the approach axis)
+/// blocks. An object between open fingers leaves freely across their faces
+/// (grasp x) and out past the fingertips (+z); a pull along the closing axis
+/// drives it into a finger pad, one along -z into the palm, and the person,
+/// who does not yield, drags the arm with it. The larger of |y . pull| and
+/// min(1, 2 max(0, -z . pull)): the palm counts in full from 30 degrees on
+/// (sin 30 = 1/2), since a gripper whose palm faces the receiver also stands
+/// between the object and their hand. 0 for a zero `pull`.
+double exitBlock(const Isometry& grasp, const Vector3& pull);
 
 /// Weighted sum of the terms (the formula above).
 double totalScore(const ScoreTerms& t, const ScoreWeights& w);

@@ -75,6 +75,7 @@ ScoreWeights readScore(const YamlReader& r) {
   w.clearance_ref = positive(r, "clearance_ref", w.clearance_ref, 2.0);
   w.shortfall = nonNegative(r, "shortfall", w.shortfall, 1e3);
   w.shortfall_ref = positive(r, "shortfall_ref", w.shortfall_ref, 0.5);
+  w.exit = nonNegative(r, "exit", w.exit, 1e3);
   r.finish();
   return w;
 }

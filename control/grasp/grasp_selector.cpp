@@ -1,6 +1,7 @@
 #include "control/grasp/grasp_selector.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace handover::control::grasp {
@@ -11,7 +12,13 @@ GraspSelector::GraspSelector(const Model& model, const std::vector<GraspSpec>& s
   if (specs.empty()) throw std::invalid_argument("GraspSelector: the object declares no grasp");
   candidates_ = enumerateGraspCandidates(specs, config.candidates);
   evaluations_.resize(candidates_.size());
-  for (const GraspCandidate& c : candidates_) preference_.push_back(specs[static_cast<std::size_t>(c.spec)].preference);
+  for (const GraspCandidate& c : candidates_) {
+    const GraspSpec& spec = specs[static_cast<std::size_t>(c.spec)];
+    preference_.push_back(spec.preference);
+    // the free axis in the candidate's own grasp frame (zero without one)
+    turn_axis_.push_back(spec.has_free_axis ? Vector3(c.in_object.linear().transpose() * spec.free_axis.normalized())
+                                            : Vector3::Zero());
+  }
   warm_.assign(candidates_.size(), false);
   solved_warm_.assign(candidates_.size(), false);
   next_seed_.assign(candidates_.size(), 0);
@@ -87,7 +94,7 @@ void GraspSelector::evaluate(int k, const Isometry& X_obj, const Vector7& q_now,
     if (start == Start::kNextSeed) next = (next + 1) % static_cast<int>(seeds_.size());
     e.feasible = solvePair(e.grasp, e.pre_grasp, seed, q_now, obstacles, num_obstacles, e);
     warm_[k] = e.feasible;
-    addPreference(k);
+    if (e.feasible) addCandidateTerms(k, e.score);
     return;
   }
   // every seed, keep the best-scoring solution
@@ -105,7 +112,7 @@ void GraspSelector::evaluate(int k, const Isometry& X_obj, const Vector7& q_now,
     }
   }
   warm_[k] = e.feasible;
-  addPreference(k);
+  if (e.feasible) addCandidateTerms(k, e.score);
 }
 
 void GraspSelector::tryCurrentBranch(int k, const Vector7& q_now, const ObstacleCapsule* obstacles,
@@ -115,19 +122,20 @@ void GraspSelector::tryCurrentBranch(int k, const Vector7& q_now, const Obstacle
   const bool ok = solvePair(e.grasp, e.pre_grasp, q_now, q_now, obstacles, num_obstacles, trial);
   e.iterations += trial.iterations;
   if (!ok) return;
-  trial.score.preference = preference_[static_cast<std::size_t>(k)];
-  trial.score.total += trial.score.preference;
+  addCandidateTerms(k, trial.score);
   if (trial.score.total <= e.score.total) return;  // e is feasible: solved warm in this update
   e.q_grasp = trial.q_grasp;
   e.q_pre_grasp = trial.q_pre_grasp;
   e.score = trial.score;
 }
 
-void GraspSelector::addPreference(int k) {
-  CandidateEvaluation& e = evaluations_[k];
-  if (!e.feasible) return;
-  e.score.preference = preference_[static_cast<std::size_t>(k)];
-  e.score.total += e.score.preference;
+void GraspSelector::addCandidateTerms(int k, ScoreTerms& score) const {
+  const std::size_t i = static_cast<std::size_t>(k);
+  score.preference = preference_[i];
+  // counted as far as the turn about the free axis turns the fingers about
+  // their own approach axis (the wrist), not the approach around the object
+  score.exit = exitBlock(evaluations_[i].grasp, pull_) * std::abs(turn_axis_[i].z());
+  score.total += score.preference - config_.score.exit * score.exit;
 }
 
 const GraspChoice& GraspSelector::update(const Isometry& X_obj, const Vector7& q_now, const ObstacleCapsule* obstacles,

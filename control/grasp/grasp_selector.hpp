@@ -67,6 +67,16 @@ class GraspSelector {
   const GraspChoice& update(const Isometry& X_obj, const Vector7& q_now, const ObstacleCapsule* obstacles = nullptr,
                             int num_obstacles = 0);
 
+  /// The direction (world, unit; zero: none) a receiver will pull the object
+  /// out of the open gripper: candidates whose fingers or palm would block it
+  /// lose config.score.exit x exitBlock (grasp_score.hpp) x |free axis .
+  /// approach axis|: where the turns about the free axis turn the fingers
+  /// about their approach axis (a wrist turn over a vertical approach), a
+  /// free way out costs little; a side presentation could free it only by
+  /// swinging the approach around the object, into the receiver's reach.
+  /// Real-time safe.
+  void setPullDirection(const Vector3& pull) { pull_ = pull; }
+
   /// Forgets warm starts and the current choice (a new object or a new approach).
   void reset();
   /// While on, the current choice is kept as long as it stays feasible, whatever
@@ -86,7 +96,8 @@ class GraspSelector {
                 int num_obstacles, Start start);
   /// Candidate k (solved warm in this update) from q_now too; keeps the better solution.
   void tryCurrentBranch(int k, const Vector7& q_now, const ObstacleCapsule* obstacles, int num_obstacles);
-  void addPreference(int k);
+  /// The candidate's own terms on a feasible solution: its spec's preference, the blocked pull.
+  void addCandidateTerms(int k, ScoreTerms& score) const;
   bool solvePair(const Isometry& grasp, const Isometry& pre_grasp, const Vector7& seed, const Vector7& q_now,
                  const ObstacleCapsule* obstacles, int num_obstacles, CandidateEvaluation& out);
 
@@ -96,6 +107,7 @@ class GraspSelector {
   std::vector<GraspCandidate> candidates_;
   std::vector<CandidateEvaluation> evaluations_;
   std::vector<double> preference_;  ///< candidate k's spec's preference (score units)
+  std::vector<Vector3> turn_axis_;  ///< candidate k's spec's free axis in its grasp frame (zero: none)
   std::vector<bool> warm_;      ///< candidate k has a converged solution to start from
   std::vector<bool> solved_warm_;  ///< candidate k was solved from its warm start in this update
   std::vector<int> next_seed_;  ///< candidate k's next cold seed (index into seeds_)
@@ -103,6 +115,7 @@ class GraspSelector {
   int cold_cursor_ = 0;         ///< round-robin start of the cold budget
   int branch_cursor_ = 0;       ///< round-robin start of the branch budget
   bool hold_ = false;
+  Vector3 pull_ = Vector3::Zero();
   GraspChoice choice_;
 };
 

@@ -159,6 +159,22 @@ TEST(GraspPlanning, APresentationIsPlannedWithoutAPreGraspBackedOffFromIt) {
 
 namespace handover::runtime {
 namespace {
+// A receiver takes the object back toward their body: the pull the
+// presentation keeps free points from the hand to the shoulder, level.
+TEST(GraspPlanning, AReceiverPullsTowardTheirShoulderLevel) {
+  perception::HumanEstimate person;
+  person.hand.translation() = control::Vector3(0.55, -0.20, 0.30);
+  person.upper_arm.translation() = control::Vector3(0.95, 0.10, 0.75);
+  const control::Vector3 pull = receiverPull(person);
+  EXPECT_NEAR(pull.norm(), 1.0, 1e-12);
+  EXPECT_NEAR(pull.z(), 0.0, 1e-12);
+  EXPECT_NEAR(pull.x(), 0.8, 1e-12);
+  EXPECT_NEAR(pull.y(), 0.6, 1e-12);
+  // a shoulder straight above the hand says nothing about the way out
+  person.upper_arm.translation() = person.hand.translation() + control::Vector3(0.0, 0.0, 0.4);
+  EXPECT_EQ(receiverPull(person), control::Vector3::Zero());
+}
+
 TEST(GraspPlanning, AHandBeyondAnUprightPresentationGetsATiltedOne) {
   // a ball held from the top, a receiver's hand high and far: with the
   // gripper pointing down the wrist is out of the arm's reach; tilted by up to
