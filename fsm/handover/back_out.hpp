@@ -4,6 +4,15 @@
 // straight to the stow pose turns the gripper while its fingers still
 // straddle the object: they strike it and spin the wrist (joint 7 past its
 // velocity limit) or drag it from the person's hand.
+//
+// While the fingers still straddle it, the person may pull the object into
+// a finger or the palm (a box taken away along the axis the fingers close
+// along): they do not yield, and an arm that holds its place against them is
+// dragged after the object, its wrist past its velocity limit when it comes
+// free. The goal yields instead: it moves along what pushes the open gripper
+// across the approach axis beyond `yield_force` (HandoverInput::tool_contact),
+// at `yield_rate` per newton above it, at most `yield_distance` in all, so the
+// finger rides along with the object, lightly, while the gripper backs off it.
 #pragma once
 
 #include "fsm/handover/handover_state.hpp"
@@ -11,10 +20,13 @@
 namespace handover::fsm {
 
 /// [Clear] Tracking off, observation none; pose task to the TCP pose
-/// `distance` behind the current one along its z axis. Clear once the TCP
-/// has moved back along that axis to within position_tolerance of
-/// `distance`. Keys: distance (m), position_tolerance (m); `timeout` (s)
-/// gives output Timeout (the transition table decides; usually the same as Clear).
+/// `distance` behind the current one along its z axis, moved along the
+/// contact force across that axis while it exceeds yield_force. Clear once the
+/// TCP has moved back along that axis to within position_tolerance of
+/// `distance`. Keys: distance (m), position_tolerance
+/// (m), yield_force (N), yield_rate (m/s per N), yield_distance (m); `timeout`
+/// (s) gives output Timeout (the transition table decides; usually the same as
+/// Clear). Real-time safe.
 class BackOut : public HandoverState {
  public:
   BackOut();
@@ -25,7 +37,10 @@ class BackOut : public HandoverState {
  private:
   int clear_;
   double distance_ = 0.08, pos_tol_ = 0.01;
+  double yield_force_ = 15.0, yield_rate_ = 0.02, yield_distance_ = 0.15;
   Isometry start_ = Isometry::Identity();  ///< the TCP when the fingers let go
+  Vector3 yielded_ = Vector3::Zero();      ///< m, how far the goal moved along the contact force
+  double last_time_ = 0.0;
 };
 
 }  // namespace handover::fsm

@@ -8,6 +8,7 @@
 #include "fsm/handover/common_states.hpp"
 #include "fsm/handover/h2r_states.hpp"
 #include "fsm/handover/object_lost.hpp"
+#include "fsm/handover/seated_in_hand.hpp"
 #include "fsm/handover/r2h_states.hpp"
 #include "fsm/handover/reach_states.hpp"
 #include "fsm/handover/safety.hpp"
@@ -63,6 +64,8 @@ HandoverFsm::HandoverFsm(const YamlReader& root, ControllerInterface& controller
   ctx_.ledger = &ledger_;
   ctx_.object = object;
   ctx_.grasp.offset = object.grasp_in_object;
+  // a flat object sits on the receiver's hand, not a ball's height above it
+  params_.object_in_hand = seatedInHand(params_.object_in_hand, object.shape, params_.object_in_hand_seat);
   ctx_.presentation.offset = params_.object_in_hand * object.grasp_in_object;
 }
 

@@ -120,6 +120,7 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
   p.ready_pose = readPose(poses.child("ready"));
   poses.finish();
   p.object_in_hand = readPose(n.child("object_in_hand"));
+  if (auto s = n.optionalChild("object_in_hand_seat")) p.object_in_hand_seat = s->checkRange(s->asDouble(), 0.0, 0.1);
   n.finish();
   return p;
 }

@@ -97,6 +97,9 @@ struct HandoverParams {
   Isometry ready_pose = Isometry::Identity();  ///< where an object to give is held
   /// Desired object pose in the person's hand frame when presenting.
   Isometry object_in_hand = Isometry::Identity();
+  /// m: a given object is lowered in the hand until its lowest point is at
+  /// most this far above the grip point (seated_in_hand.hpp; 0: as placed).
+  double object_in_hand_seat = 0.0;
 };
 
 /// Reads and validates `params`; throws InputError naming file, key, line.

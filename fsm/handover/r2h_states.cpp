@@ -105,7 +105,8 @@ bool Present::onRun(HandoverContext& ctx) {
   last_time_ = ctx.time;
   // a person who takes hold and pulls before the robot settled: that is the
   // handover, and the hand moving away is the pull, not a withdrawal
-  if (pull_threshold_ > 0.0 && (ctx.interaction - ctx.interaction_holding).norm() > pull_threshold_) {
+  if (pull_threshold_ > 0.0 && (ctx.interaction - ctx.interaction_holding).norm() > pull_threshold_ &&
+      receiverMayHoldIt(ctx)) {
     if (pull_since_ < 0.0) pull_since_ = ctx.time;
     if (ctx.time - pull_since_ >= pull_hold_) {
       setOutput(pulled_);
@@ -153,7 +154,7 @@ void DetectPull::onStart(HandoverContext& ctx) {
 }
 
 bool DetectPull::onRun(HandoverContext& ctx) {
-  if ((ctx.interaction - ctx.interaction_holding).norm() <= threshold_) {
+  if ((ctx.interaction - ctx.interaction_holding).norm() <= threshold_ || !receiverMayHoldIt(ctx)) {
     since_ = -1.0;
     return false;
   }

@@ -12,6 +12,11 @@ bool handAtHeldObject(const HandoverContext& ctx, double reach) {
   return io::signedDistance(ctx.object.shape, grip) <= reach;
 }
 
+bool receiverMayHoldIt(const HandoverContext& ctx) {
+  if (!fresh(ctx.in.hand, ctx.params->max_data_age) || !ctx.object.shape.known()) return true;
+  return handAtHeldObject(ctx, kReceiverGripReach);
+}
+
 bool ReceiverTake::configure(const YamlReader& def) {
   enabled_ = def.has("pull_hold_time");
   if (enabled_) hold_time_ = HandoverState::readRange(def, "pull_hold_time", 0.0, 5.0);
@@ -19,7 +24,7 @@ bool ReceiverTake::configure(const YamlReader& def) {
 }
 
 bool ReceiverTake::taken(const HandoverContext& ctx) {
-  if (!enabled_ || !handAtHeldObject(ctx, kGripReach)) {
+  if (!enabled_ || !handAtHeldObject(ctx, kReceiverGripReach)) {
     pull_.restart();
     return false;
   }

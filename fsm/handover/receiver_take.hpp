@@ -16,6 +16,18 @@ namespace handover::fsm {
 /// TCP; the object's centre plus `reach` when its shape is unknown). RT safe.
 bool handAtHeldObject(const HandoverContext& ctx, double reach);
 
+/// m: a hand holding the object has its grip point within a palm's half
+/// width of its surface (the simulated person takes hold within 3 cm; the
+/// sensor's noise on top)
+constexpr double kReceiverGripReach = 0.05;
+
+/// A pull on the presented object can be the receiver's: their hand, where
+/// it is seen (fresh), is at the object (handAtHeldObject, kReceiverGripReach);
+/// unseen, or the object's shape unknown, the force alone decides. A hand that moved to another place
+/// brushed the object on its way, the robot read a pull and let go of an
+/// object nobody held. RT safe.
+bool receiverMayHoldIt(const HandoverContext& ctx);
+
 /// The pull of a receiver who holds the carried object: pulledBack (the
 /// force across the floor toward where their hand came from, params.withdraw
 /// take_back_force, the hand moving that way faster than a hand at rest)
@@ -32,10 +44,6 @@ class ReceiverTake {
   bool taken(const HandoverContext& ctx);
 
  private:
-  /// m: a hand holding the object has its grip point within a palm's half
-  /// width of its surface (the simulated person takes hold within 3 cm; the
-  /// sensor's noise on top)
-  static constexpr double kGripReach = 0.05;
   /// m/s: the hand that pulls moves (the contract's hand at rest is slower):
   /// an arm carrying the object into a hand that stands still pushes it
   /// just as hard (150 N seen), and that is no take

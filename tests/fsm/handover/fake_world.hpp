@@ -156,6 +156,7 @@ struct World {
   Vector3 object = Vector3::Zero();
   double mass = 0.3;
   Vector3 pull = Vector3::Zero();   // force of a pulling person, while both hold
+  Vector3 brush = Vector3::Zero();  // force of a hand that pushes the carried object without holding it
   Vector3 inertia = Vector3::Zero();  // the held object's inertial force as the arm brakes: raw wrist force only
   double human_distance = 1.0;  // robot to the person's hand
   double arm_distance = 1.0;    // robot to the person's forearm / upper arm
@@ -246,13 +247,16 @@ struct World {
     const bool robot_carries = robot_grip && !person_holds;
     Vector3 f(0, 0, -(kHandMass + (robot_carries ? mass : 0.0)) * 9.81);
     if (robot_grip && person_holds) f += pull;
+    if (robot_grip) f += brush;
     if (robot_grip) f += inertia;  // the estimator's interaction force takes it out again
     in.wrench.head<3>() = f;
     in.load_share = robot_carries ? 1.0 : 0.0;  // what control::ContactWrenchEstimator would report
     if (robot_grip && share >= 0.0) in.load_share = share;
     // beyond the tool and the whole object (the estimator's interaction force): the
     // person's support while they carry it, their pull while both hold it
-    if (robot_grip) in.interaction_force = Vector3(0, 0, robot_carries ? 0.0 : mass * 9.81) + (person_holds ? pull : Vector3::Zero());
+    if (robot_grip)
+      in.interaction_force =
+          Vector3(0, 0, robot_carries ? 0.0 : mass * 9.81) + (person_holds ? pull : Vector3::Zero()) + brush;
     const double age = time - last_sample;
     in.hand.pose = handPose();
     const double turn = 2.0 * time * 1000.0;  // rad: a new direction every ms

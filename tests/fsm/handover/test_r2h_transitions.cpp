@@ -61,6 +61,55 @@ TEST(HandoverR2H, FingersBackOutAlongTheApproachAxisBeforeTurningAway) {
   EXPECT_LT((moved + moved.dot(-approach) * approach).norm(), 0.02);     // not sideways
 }
 
+// The receiver pulls the object into a finger while the fingers still
+// straddle it: the back-out goal yields along the push (beyond yield_force)
+// instead of holding its place against a person who does not yield, and the
+// gripper still backs off the object from where it was pushed to.
+TEST(HandoverR2H, BackingOutYieldsToAnObjectPulledIntoAFinger) {
+  Rig rig(true);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+  rig.world.moveHand(kReceive, 0.5);
+  rig.person = receiverWhoPulls(true);
+  ASSERT_TRUE(rig.runUntilState("BackOut", 20.0)) << rig.fsm->activePath();
+  const Isometry at_release = rig.world.tcp;
+  const Vector3 approach = at_release.linear().col(2);
+  const Vector3 across = at_release.linear().col(1);  // the closing axis
+  const Vector3 goal0 = rig.ctl.pose.translation();
+  rig.world.tool_contact.head<3>() = 40.0 * across;   // the object pressed into a finger
+  for (int k = 0; k < 100 && rig.fsm->activePath().find("BackOut") != std::string::npos; ++k) rig.step();
+  const Vector3 shift = rig.ctl.pose.translation() - goal0;
+  EXPECT_GT(shift.dot(across), 0.01) << "the goal moved along the push";
+  EXPECT_NEAR(shift.dot(approach), 0.0, 1e-9);
+  EXPECT_LT((shift - shift.dot(across) * across).norm(), 1e-9);
+  // a push below yield_force leaves the goal in place
+  rig.world.tool_contact.setZero();
+  const Vector3 goal1 = rig.ctl.pose.translation();
+  for (int k = 0; k < 20; ++k) rig.step();
+  EXPECT_LT((rig.ctl.pose.translation() - goal1).norm(), 1e-12);
+}
+
+// While the robot waits for the pull, the receiver moves their hand to
+// another place and brushes the object on the way: a force the robot feels,
+// but from a hand that does not hold it (seen 9 cm from it). Read as the pull,
+// the robot let go of an object nobody held and it fell. The same force from
+// the hand at the object is the pull.
+TEST(HandoverR2H, APushFromAHandAwayFromTheObjectIsNoPull) {
+  Rig rig(true, false, io::ObjectShape{io::ObjectShape::Kind::kSphere, Vector3(0.03, 0.0, 0.0)});
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+  rig.world.moveHand(kReceive, 0.5);
+  ASSERT_TRUE(rig.runUntilState("DetectPull", 20.0)) << rig.fsm->activePath();
+  const Vector3 at_object = rig.world.hand;
+  rig.world.hand = at_object + Vector3(0.0, -0.12, 0.0);
+  rig.world.moveHand(rig.world.hand, 0.5);
+  rig.world.brush = Vector3(5.0, 3.0, 0.0);  // beyond the 3 N pull threshold
+  EXPECT_FALSE(rig.runUntilState("Release", 1.0)) << rig.fsm->activePath();
+  EXPECT_NE(rig.fsm->activePath().find("DetectPull"), std::string::npos) << rig.fsm->activePath();
+  // back at the object, the same force is the pull
+  rig.world.hand = at_object;
+  rig.world.moveHand(at_object, 0.5);
+  EXPECT_TRUE(rig.runUntilState("Release", 1.0)) << rig.fsm->activePath();
+}
+
 TEST(HandoverR2H, WaitingForThePullHoldsAtThePresentationPoseNotShortOfIt) {
   Rig rig(true);
   ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
