@@ -13,6 +13,19 @@
 //   held by its top hanging into their reach at the ready pose) and pulls it
 //   away: the robot held on, took the hand leaving with the book for a
 //   withdrawal and lost it; it now lets go (fsm/handover/receiver_take.hpp).
+// - a receiver who pulls the object toward themselves along the axis the
+//   fingers close along: the open fingers held it, the person (who does not
+//   yield) dragged the arm along and the wrist past its velocity limit as it
+//   came free (unsafe). The presentation now turns the fingers across the
+//   pull (control/grasp/grasp_score.hpp exitBlock), and the box, declared
+//   deeper than the palm lets it sit, starts in front of the palm
+//   (app/run/world_setup.hpp robotHeldObject).
+// - a deck of cards 2 cm thick held from above near one end: presented with
+//   its centre 5 cm above the receiver's grip point (a ball's height), its
+//   underside floated 4 cm up, beyond the 3 cm a person closes a hand within;
+//   nobody took it and the give timed out after two retries. It is now
+//   seated with its underside 2 cm above the grip point
+//   (fsm/handover/seated_in_hand.hpp).
 #include <gtest/gtest.h>
 
 #include "tests/app/run/run_repo_file.hpp"
@@ -32,6 +45,26 @@ TEST(GiveGeometry, AReceiverWhoTakesTheObjectWhereTheRobotWaitsWithItIsHandedIt)
   EXPECT_EQ(r.aborts, 0);
   EXPECT_EQ(testing::stateVisits(r, "/Present"), 0) << "taken before it was presented";
   EXPECT_EQ(testing::stateVisits(r, "/Release"), 1);
+  EXPECT_EQ(r.human_contacts, 0);
+  EXPECT_EQ(r.limit_violations.position + r.limit_violations.velocity + r.limit_violations.torque, 0);
+}
+
+TEST(GiveGeometry, AReceiverWhoPullsTheObjectTowardThemselvesIsNotDraggingTheArm) {
+  const testing::ScratchDir dir("pulled_toward_receiver");
+  const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/r2h_pulled_toward_the_receiver.yaml");
+  EXPECT_EQ(r.outcome, "success");
+  EXPECT_EQ(r.handovers, 1);
+  EXPECT_EQ(r.human_contacts, 0);
+  EXPECT_EQ(r.limit_violations.position + r.limit_violations.velocity + r.limit_violations.torque, 0);
+  EXPECT_EQ(r.qp_failures, 0);
+}
+
+TEST(GiveGeometry, AFlatObjectIsSeatedOnTheReceiversHand) {
+  const testing::ScratchDir dir("flat_card_deck");
+  const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/r2h_flat_card_deck.yaml");
+  EXPECT_EQ(r.outcome, "success");
+  EXPECT_EQ(r.handovers, 1);
+  EXPECT_EQ(r.aborts, 0);
   EXPECT_EQ(r.human_contacts, 0);
   EXPECT_EQ(r.limit_violations.position + r.limit_violations.velocity + r.limit_violations.torque, 0);
 }
