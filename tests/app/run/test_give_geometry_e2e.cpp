@@ -33,40 +33,35 @@
 namespace handover {
 namespace {
 
+/// Runs tests/app/run/data/<file>: one handover, at the first attempt, within every limit, nobody touched.
+app::RunSummary expectOneCleanHandover(const std::string& scratch, const std::string& file) {
+  const testing::ScratchDir dir(scratch);
+  const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/" + file);
+  EXPECT_EQ(r.outcome, "success") << file;
+  EXPECT_EQ(r.handovers, 1) << file;
+  EXPECT_EQ(r.aborts, 0) << file;
+  EXPECT_EQ(r.human_contacts, 0) << file;
+  EXPECT_EQ(r.limit_violations.position + r.limit_violations.velocity + r.limit_violations.torque, 0) << file;
+  EXPECT_EQ(r.qp_failures, 0) << file;
+  return r;
+}
+
 TEST(GiveGeometry, ASmallBallIsPutOntoAHighPalmWithTheFingersLevel) {
   testing::expectSuccessAtTheFirstAttempt("ball_high_palm", "r2h_ball_on_high_palm.yaml", "/Present");
 }
 
 TEST(GiveGeometry, AReceiverWhoTakesTheObjectWhereTheRobotWaitsWithItIsHandedIt) {
-  const testing::ScratchDir dir("taken_while_waiting");
-  const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/r2h_taken_while_waiting.yaml");
-  EXPECT_EQ(r.outcome, "success");
-  EXPECT_EQ(r.handovers, 1);
-  EXPECT_EQ(r.aborts, 0);
+  const app::RunSummary r = expectOneCleanHandover("taken_while_waiting", "r2h_taken_while_waiting.yaml");
   EXPECT_EQ(testing::stateVisits(r, "/Present"), 0) << "taken before it was presented";
   EXPECT_EQ(testing::stateVisits(r, "/Release"), 1);
-  EXPECT_EQ(r.human_contacts, 0);
-  EXPECT_EQ(r.limit_violations.position + r.limit_violations.velocity + r.limit_violations.torque, 0);
 }
 
 TEST(GiveGeometry, AReceiverWhoPullsTheObjectTowardThemselvesIsNotDraggingTheArm) {
-  const testing::ScratchDir dir("pulled_toward_receiver");
-  const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/r2h_pulled_toward_the_receiver.yaml");
-  EXPECT_EQ(r.outcome, "success");
-  EXPECT_EQ(r.handovers, 1);
-  EXPECT_EQ(r.human_contacts, 0);
-  EXPECT_EQ(r.limit_violations.position + r.limit_violations.velocity + r.limit_violations.torque, 0);
-  EXPECT_EQ(r.qp_failures, 0);
+  expectOneCleanHandover("pulled_toward_receiver", "r2h_pulled_toward_the_receiver.yaml");
 }
 
 TEST(GiveGeometry, AFlatObjectIsSeatedOnTheReceiversHand) {
-  const testing::ScratchDir dir("flat_card_deck");
-  const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/r2h_flat_card_deck.yaml");
-  EXPECT_EQ(r.outcome, "success");
-  EXPECT_EQ(r.handovers, 1);
-  EXPECT_EQ(r.aborts, 0);
-  EXPECT_EQ(r.human_contacts, 0);
-  EXPECT_EQ(r.limit_violations.position + r.limit_violations.velocity + r.limit_violations.torque, 0);
+  expectOneCleanHandover("flat_card_deck", "r2h_flat_card_deck.yaml");
 }
 
 }  // namespace

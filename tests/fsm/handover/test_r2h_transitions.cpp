@@ -42,12 +42,17 @@ bool withdrawDuringApproach(Rig& rig) {
   return rig.runUntilState("Retreat", 3.0);
 }
 
-TEST(HandoverR2H, FingersBackOutAlongTheApproachAxisBeforeTurningAway) {
-  Rig rig(true);
-  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+/// A receiver comes to kReceive, takes the object and pulls: true once the robot backs out.
+bool pulledIntoBackOut(Rig& rig) {
+  if (!rig.runUntilState("WaitForReceiver", 5.0)) return false;
   rig.world.moveHand(kReceive, 0.5);
   rig.person = receiverWhoPulls(true);
-  ASSERT_TRUE(rig.runUntilState("BackOut", 20.0)) << rig.fsm->activePath();
+  return rig.runUntilState("BackOut", 20.0);
+}
+
+TEST(HandoverR2H, FingersBackOutAlongTheApproachAxisBeforeTurningAway) {
+  Rig rig(true);
+  ASSERT_TRUE(pulledIntoBackOut(rig)) << rig.fsm->activePath();
   const Isometry at_release = rig.world.tcp;
   const Vector3 approach = at_release.linear().col(2);
   // the target: straight back along the approach axis, orientation kept
@@ -67,10 +72,7 @@ TEST(HandoverR2H, FingersBackOutAlongTheApproachAxisBeforeTurningAway) {
 // gripper still backs off the object from where it was pushed to.
 TEST(HandoverR2H, BackingOutYieldsToAnObjectPulledIntoAFinger) {
   Rig rig(true);
-  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
-  rig.world.moveHand(kReceive, 0.5);
-  rig.person = receiverWhoPulls(true);
-  ASSERT_TRUE(rig.runUntilState("BackOut", 20.0)) << rig.fsm->activePath();
+  ASSERT_TRUE(pulledIntoBackOut(rig)) << rig.fsm->activePath();
   const Isometry at_release = rig.world.tcp;
   const Vector3 approach = at_release.linear().col(2);
   const Vector3 across = at_release.linear().col(1);  // the closing axis
