@@ -132,9 +132,11 @@ void GraspSelector::tryCurrentBranch(int k, const Vector7& q_now, const Obstacle
 void GraspSelector::addCandidateTerms(int k, ScoreTerms& score) const {
   const std::size_t i = static_cast<std::size_t>(k);
   score.preference = preference_[i];
-  // counted as far as the turn about the free axis turns the fingers about
-  // their own approach axis (the wrist), not the approach around the object
-  score.exit = exitBlock(evaluations_[i].grasp, pull_) * std::abs(turn_axis_[i].z());
+  // counted by the share of the turn about the free axis that turns the
+  // fingers about their own approach axis (the wrist, cos^2), not the
+  // approach around the object (sin^2)
+  const double wrist = turn_axis_[i].z() * turn_axis_[i].z();
+  score.exit = exitBlock(evaluations_[i].grasp, pull_) * wrist;
   score.total += score.preference - config_.score.exit * score.exit;
 }
 

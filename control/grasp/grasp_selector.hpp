@@ -69,11 +69,12 @@ class GraspSelector {
 
   /// The direction (world, unit; zero: none) a receiver will pull the object
   /// out of the open gripper: candidates whose fingers or palm would block it
-  /// lose config.score.exit x exitBlock (grasp_score.hpp) x |free axis .
-  /// approach axis|: where the turns about the free axis turn the fingers
-  /// about their approach axis (a wrist turn over a vertical approach), a
-  /// free way out costs little; a side presentation could free it only by
-  /// swinging the approach around the object, into the receiver's reach.
+  /// lose config.score.exit x exitBlock (grasp_score.hpp) x (free axis .
+  /// approach axis)^2, the share of the turn about the free axis that turns
+  /// the fingers about their approach axis (a wrist turn over a vertical
+  /// approach) rather than swinging the approach around the object: a side
+  /// presentation, upright or tilted, could free the pull only by swinging
+  /// the gripper into the receiver's reach.
   /// Real-time safe.
   void setPullDirection(const Vector3& pull) { pull_ = pull; }
 
