@@ -37,7 +37,7 @@ class BackOut : public HandoverState {
  private:
   int clear_;
   double distance_ = 0.08, pos_tol_ = 0.01;
-  double yield_force_ = 15.0, yield_rate_ = 0.02, yield_distance_ = 0.15;
+  double yield_force_ = 20.0, yield_rate_ = 0.01, yield_distance_ = 0.15;  // config/fsm.yaml sets them
   Isometry start_ = Isometry::Identity();  ///< the TCP when the fingers let go
   Vector3 yielded_ = Vector3::Zero();      ///< m, how far the goal moved along the contact force
   double last_time_ = 0.0;
