@@ -212,7 +212,7 @@ Grasp::Grasp()
 void Grasp::configure(const YamlReader& def) {
   pos_tol_ = readPositive(def, "position_tolerance", 0.2);
   rot_tol_ = readPositive(def, "orientation_tolerance_deg", 180.0) * M_PI / 180.0;
-  speed_tol_ = readPositive(def, "speed_tolerance", 2.0);
+  if (def.has("speed_tolerance")) speed_tol_ = readPositive(def, "speed_tolerance", 2.0);
   confirm_time_ = readRange(def, "confirm_time", 0.0, 5.0);
   stall_speed_ = readPositive(def, "stall_speed", 1.0);
   min_width_ = readRange(def, "min_width", 0.0, 0.08);
@@ -257,6 +257,15 @@ FingerFit Grasp::fitNow(const HandoverContext& ctx) const {
   return fitFor(ctx, object, correctedGraspFrame(ctx));
 }
 
+double Grasp::closingTime(const HandoverContext& ctx, const FingerFit& f) const {
+  const HandoverParams& p = *ctx.params;
+  if (p.gripper_closing_speed <= 0.0) return 0.0;
+  // the gap the fingers close before they meet the object: twice the clearance per side
+  // (the whole opening for an object of unknown shape)
+  const double gap = f.clearance < 0.5 * p.gripper_open_width ? 2.0 * f.clearance : ctx.in.finger_width;
+  return std::max(0.0, gap) / p.gripper_closing_speed;
+}
+
 bool Grasp::feelTouch(HandoverContext& ctx, const FingerFit& f) {
   const Eigen::Matrix3d& tcp = ctx.in.tcp_pose.linear();
   // the contact pushes the gripper back against its approach axis (z); a force p at
@@ -293,7 +302,8 @@ bool Grasp::onRun(HandoverContext& ctx) {
     slideToward(ctx, ctrl(), funnel_, funnelStandoff(f, funnel_.max_standoff, funnel_.margin), touch_shift_);
     // closes only on an object between the fingers (the funnel's last part)
     if (f.fit <= 0.0 || positionError(ctx.in.tcp_pose, correctedGraspFrame(ctx)) > pos_tol_ ||
-        !alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_))
+        !alignedWhenClosed(ctx.in, pos_tol_, rot_tol_, closingTime(ctx, f)) ||
+        (speed_tol_ > 0.0 && !alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_)))
       return false;
     ctx.force_before_grasp = ctx.force;  // reference for the release test
     ctrl().setGripper(ctx.params->gripper_close_width, ctx.params->gripForce(ctx.object.mass, ctx.comInTcp()));
@@ -338,9 +348,11 @@ void WaitForRelease::configure(const YamlReader& def) {
     def.fail("needs release_share (the robot's load share, 0..1) or release_fraction (of m g)");
   }
   hold_time_ = readRange(def, "hold_time", 0.0, 5.0);
+  if (def.has("slip_width")) slip_width_ = readRange(def, "slip_width", 0.0, 0.08);
 }
 
 void WaitForRelease::onStart(HandoverContext& ctx) {
+  held_width_ = ctx.in.finger_width;
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   since_ = -1.0;
   holding_ = false;
@@ -373,7 +385,8 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   // way (the object's estimate sits in that hand until the robot holds it, so the hand
   // alone cannot tell a person who let go and leaves). Not the load share: a pull down and
   // away reads as the object's weight
-  if (pull_.pulled(ctx, hold_time_)) {
+  held_width_ = std::max(held_width_, ctx.in.finger_width);
+  if (pull_.pulled(ctx, hold_time_) || (slip_width_ > 0.0 && ctx.in.finger_width < held_width_ - slip_width_)) {
     setOutput(withdrawn_);
     return true;
   }

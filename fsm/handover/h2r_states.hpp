@@ -100,8 +100,12 @@ class Approach : public HandoverState {
 };
 
 /// [Grasped, Missed, Withdrawn] Keeps tracking the grasp frame; closes when
-/// position, orientation and relative speed errors are within tolerance
-/// (recording the force before the grasp). Once closing for at least
+/// the position and orientation errors are within tolerance now and where the
+/// TCP will be when the fingers meet the object (params.gripper.closing_speed:
+/// the fingers take (clearance x 2) / closing_speed; alignedWhenClosed),
+/// recording the force before the grasp. A close waited for the TCP to come
+/// to rest before (speed_tolerance, still honoured when given): 0.15 s of
+/// every take's last centimetres, while the fingers need as long to get there. Once closing for at least
 /// confirm_time and the fingers have stopped (slower than stall_speed), the
 /// grasp is confirmed by a finger width above min_width (not closed on
 /// nothing), else missed. Withdrawn: before closing, the person withdrew
@@ -120,7 +124,7 @@ class Approach : public HandoverState {
 /// the fingers off and slides them in again. Not more than max_touches times
 /// per attempt.
 /// Keys: position_tolerance (m), orientation_tolerance_deg, speed_tolerance
-/// (m/s), confirm_time (s), stall_speed (m/s), min_width (m), standoff (m,
+/// (m/s, optional), confirm_time (s), stall_speed (m/s), min_width (m), standoff (m,
 /// optional, default 0: no funnel) with standoff_speed (m/s),
 /// standoff_feed_forward (bool, default false: the slide fed forward, and
 /// ended at the grasp also once closing) with standoff_acceleration (m/s^2,
@@ -136,6 +140,8 @@ class Grasp : public HandoverState {
 
  private:
   FingerFit fitNow(const HandoverContext& ctx) const;
+  /// s the fingers take from the close to the object for fit `f`. RT safe.
+  double closingTime(const HandoverContext& ctx, const FingerFit& f) const;
   /// The grasp frame corrected by what the fingers felt (world).
   Isometry correctedGraspFrame(const HandoverContext& ctx) const;
   /// A fingertip on the object: corrects the grasp toward it; true when it
@@ -143,7 +149,7 @@ class Grasp : public HandoverState {
   bool feelTouch(HandoverContext& ctx, const FingerFit& f);
 
   int grasped_, missed_, withdrawn_;
-  double pos_tol_ = 0.01, rot_tol_ = 0.17, speed_tol_ = 0.05, confirm_time_ = 0.3, min_width_ = 0.005;
+  double pos_tol_ = 0.01, rot_tol_ = 0.17, speed_tol_ = 0.0, confirm_time_ = 0.3, min_width_ = 0.005;
   double stall_speed_ = 0.01;
   GraspFunnel funnel_;           ///< max_standoff 0: no funnel
   bool closing_ = false;
@@ -185,9 +191,16 @@ class Grasp : public HandoverState {
 /// at the pose task's K = 6 (times the arm's task-space inertia: tens of
 /// N/m) half a newton the model missed as the weight came over sank the
 /// object by 2-3 cm.
+/// The object slid out of the fingers (they closed in by slip_width from the
+/// widest they held it at: a person who took it back as the fingers closed,
+/// the pull not felt): Withdrawn as well. Waiting on, the robot held its
+/// closed fingers where the person's hand came back to offer it again
+/// (struck, g409_00790); the interrupt object_lost watches only once the robot
+/// carries the object (payload set).
 /// Keys: release_share (0..1) with release_distance (m), release_wait
 /// (s) and hold_share (0.05..release_share, default release_share), or
-/// release_fraction (0..2); hold_time (s).
+/// release_fraction (0..2); hold_time (s); slip_width (m, optional, default
+/// 0: not watched).
 class WaitForRelease : public HandoverState {
  public:
   WaitForRelease();
@@ -209,6 +222,8 @@ class WaitForRelease : public HandoverState {
   double carry_since_ = -1.0;  ///< s, since when the robot carries the load
   double hand_start_ = -1.0;  ///< m, hand to TCP when first seen in this state; < 0: not yet
   double since_ = -1.0;
+  double slip_width_ = 0.0;    ///< slip_width, m (0: not watched)
+  double held_width_ = 0.0;    ///< m, the widest the fingers held the object at in this state
 };
 
 }  // namespace handover::fsm

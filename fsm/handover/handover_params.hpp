@@ -53,6 +53,10 @@ struct HandoverParams {
   double gripper_open_width = 0.08;  ///< m, commanded opening
   double gripper_close_width = 0.0;  ///< m, commanded when grasping (the object stops the fingers)
   double gripper_force = 40.0;       ///< N, force limit while opening (and before a grasp)
+  /// m/s: how fast the gap between the fingers closes (0: not known). A close
+  /// meets the object (gap - object width) / closing_speed later: Grasp
+  /// closes when the TCP will be at the grasp then.
+  double gripper_closing_speed = 0.0;
   /// m: half the size of a finger's contact face, across and along the
   /// fingers: the lever by which a turn of the gripper against the object
   /// widens the object's footprint between the fingers (grasp_funnel.hpp)

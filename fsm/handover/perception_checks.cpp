@@ -69,6 +69,14 @@ bool alignedWithTarget(const HandoverInput& in, double pos_tol, double rot_tol, 
          rotationError(in.tcp_pose, in.target_pose) <= rot_tol && speed <= speed_tol;
 }
 
+bool alignedWhenClosed(const HandoverInput& in, double pos_tol, double rot_tol, double lead) {
+  const Vector3 error = in.tcp_pose.translation() - in.target_pose.translation();
+  const Vector6 relative = in.tcp_velocity - in.target_velocity;
+  const double turn = rotationError(in.tcp_pose, in.target_pose);
+  return error.norm() <= pos_tol && (error + lead * relative.head<3>()).norm() <= pos_tol && turn <= rot_tol &&
+         turn + lead * relative.tail<3>().norm() <= rot_tol;
+}
+
 double heldObjectPositionError(const Isometry& a, const Isometry& b, const ObjectInfo& object) {
   return positionError(objectPose(a, object), objectPose(b, object));
 }

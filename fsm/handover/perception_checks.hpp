@@ -41,6 +41,14 @@ double rotationError(const Isometry& a, const Isometry& b);
 /// TCP pose, orientation and linear-speed errors against the tracking target
 /// all below the given tolerances.
 bool alignedWithTarget(const HandoverInput& in, double pos_tol, double rot_tol, double speed_tol);
+/// The TCP's position and orientation errors against the tracking target
+/// within tolerance now and `lead` s ahead: the position moving on at the
+/// velocity it has against the target, the turn grown by its relative angular
+/// speed whichever way it turns (a close commanded now meets the object when
+/// the fingers get there, lead s later: where the TCP is then is what counts,
+/// not how fast it still moves; the tracking decelerates, so the straight
+/// line is the worse case). RT safe.
+bool alignedWhenClosed(const HandoverInput& in, double pos_tol, double rot_tol, double lead);
 
 /// Errors of the object the gripper holds (ObjectInfo::grasp_in_object, the
 /// TCP being the grasp frame) between the TCP at `a` and at `b`, as a person

@@ -91,6 +91,34 @@ TEST(PresentedAtTarget, AMovingGripperIsNotPresentedYet) {
 // Withdrawal at the workspace's edge: entering the region offers, leaving it grown by the
 // margin withdraws. A receiver's hand resting 5 mm inside the box's face went out and in with
 // the sensor's noise: the give cycled Approach / Retreat until it aborted (g91_00389).
+TEST(AlignedWhenClosed, TheTcpStillSlidingInIsJudgedWhereTheFingersMeetTheObject) {
+  // 1.5 cm short along the approach axis, sliding in at 0.1 m/s: in 0.15 s it is there
+  const Vector3 approach = kTarget.linear().col(2);
+  Isometry tcp = kTarget;
+  tcp.translation() -= 0.015 * approach;
+  HandoverInput in = presenting(tcp, kTarget);
+  in.tcp_velocity.head<3>() = 0.1 * approach;
+  EXPECT_TRUE(alignedWhenClosed(in, 0.02, 10 * kDeg, 0.15));
+  EXPECT_FALSE(alignedWithTarget(in, 0.02, 10 * kDeg, 0.05));  // the speed test waited for rest
+  // the same speed across the fingers carries it 1.5 cm sideways as they close: not yet
+  in.tcp_velocity.head<3>() = 0.1 * kTarget.linear().col(1);
+  EXPECT_FALSE(alignedWhenClosed(in, 0.02, 10 * kDeg, 0.15));
+  EXPECT_TRUE(alignedWhenClosed(in, 0.02, 10 * kDeg, 0.0));  // a close that is instant: where it is now
+  // a target that moves with the TCP: nothing relative
+  in.target_velocity.head<3>() = in.tcp_velocity.head<3>();
+  EXPECT_TRUE(alignedWhenClosed(in, 0.02, 10 * kDeg, 0.15));
+}
+
+TEST(AlignedWhenClosed, AGripperStillTurningIsNotAligned) {
+  HandoverInput in = presenting(turned(kTarget, kTarget.translation(), Vector3::UnitZ(), 5 * kDeg), kTarget);
+  EXPECT_TRUE(alignedWhenClosed(in, 0.02, 10 * kDeg, 0.15));
+  in.tcp_velocity.tail<3>() = Vector3(0.0, 0.0, 1.0);  // 1 rad/s: 8.6 deg more by then
+  EXPECT_FALSE(alignedWhenClosed(in, 0.02, 10 * kDeg, 0.15));
+  // and too far now stays too far, whatever the motion
+  in = presenting(turned(kTarget, kTarget.translation(), Vector3::UnitZ(), 12 * kDeg), kTarget);
+  EXPECT_FALSE(alignedWhenClosed(in, 0.02, 10 * kDeg, 0.0));
+}
+
 TEST(Withdrawn, AHandOnTheWorkspacesEdgeIsWithdrawnOnlyOnceOutsideTheMargin) {
   HandoverParams params;
   params.withdraw_workspace_margin = 0.05;
