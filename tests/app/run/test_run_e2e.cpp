@@ -336,6 +336,14 @@ TEST(RunEndToEnd, RobotToHumanGivesTheObject) {
   EXPECT_GT(log.number(log.rows.size() - 1, "finger_width"), objectWidth(run.scenario)) << "fingers open";
 }
 
+// RetreatOpen as Retreat: whether the fingers had begun to close on the
+// object before the person withdrew depends on how soon the arm got there
+std::vector<std::string> retreatsAlike(std::vector<std::string> seq) {
+  for (auto& st : seq)
+    if (st == "RetreatOpen") st = "Retreat";
+  return seq;
+}
+
 TEST(RunEndToEnd, PersonLeavesForGoodAborts) {
   ScratchDir dir("run_abort");
   const RunResult run = runShipped(dir, "h2r_abort");
@@ -343,7 +351,7 @@ TEST(RunEndToEnd, PersonLeavesForGoodAborts) {
   EXPECT_EQ(s.outcome, "aborted") << joined(s.states);
   EXPECT_EQ(s.aborts, 1);
   EXPECT_EQ(s.handovers, 0);
-  const std::vector<std::string> seq = leaves(s.states);
+  const std::vector<std::string> seq = retreatsAlike(leaves(s.states));
   EXPECT_TRUE(endsWith(seq, {"Retreat", "WaitAgain", "Aborted"})) << joined(s.states);
   EXPECT_TRUE(inOrder(seq, {"WaitForOffer", "Approach", "Retreat"})) << joined(s.states);
   EXPECT_EQ(std::count(seq.begin(), seq.end(), "Done"), 0) << joined(s.states);
@@ -364,7 +372,7 @@ TEST(RunEndToEnd, PersonComesBackRetryThenSuccess) {
   // the first attempt was abandoned (fsm HandoverStats: aborts = attempts abandoned)
   EXPECT_EQ(s.aborts, 1);
   EXPECT_EQ(s.handovers, 1);
-  const std::vector<std::string> seq = leaves(s.states);
+  const std::vector<std::string> seq = retreatsAlike(leaves(s.states));
   EXPECT_TRUE(inOrder(seq, {"WaitForOffer", "Approach", "Retreat", "WaitAgain", "Approach", "Grasp"}))
       << joined(s.states);
   EXPECT_TRUE(endsWith(seq, {"Grasp", "WaitForRelease", "Retract", "Done"})) << joined(s.states);
