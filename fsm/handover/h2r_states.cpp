@@ -348,11 +348,10 @@ void WaitForRelease::configure(const YamlReader& def) {
     def.fail("needs release_share (the robot's load share, 0..1) or release_fraction (of m g)");
   }
   hold_time_ = readRange(def, "hold_time", 0.0, 5.0);
-  if (def.has("slip_width")) slip_width_ = readRange(def, "slip_width", 0.0, 0.08);
+  if (def.has("empty_width")) empty_width_ = readRange(def, "empty_width", 0.0, 0.08);
 }
 
 void WaitForRelease::onStart(HandoverContext& ctx) {
-  held_width_ = ctx.in.finger_width;
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   since_ = -1.0;
   holding_ = false;
@@ -385,8 +384,7 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   // way (the object's estimate sits in that hand until the robot holds it, so the hand
   // alone cannot tell a person who let go and leaves). Not the load share: a pull down and
   // away reads as the object's weight
-  held_width_ = std::max(held_width_, ctx.in.finger_width);
-  if (pull_.pulled(ctx, hold_time_) || (slip_width_ > 0.0 && ctx.in.finger_width < held_width_ - slip_width_)) {
+  if (pull_.pulled(ctx, hold_time_) || ctx.in.finger_width < empty_width_) {
     setOutput(withdrawn_);
     return true;
   }

@@ -191,15 +191,17 @@ class Grasp : public HandoverState {
 /// at the pose task's K = 6 (times the arm's task-space inertia: tens of
 /// N/m) half a newton the model missed as the weight came over sank the
 /// object by 2-3 cm.
-/// The object slid out of the fingers (they closed in by slip_width from the
-/// widest they held it at: a person who took it back as the fingers closed,
-/// the pull not felt): Withdrawn as well. Waiting on, the robot held its
-/// closed fingers where the person's hand came back to offer it again
-/// (struck, g409_00790); the interrupt object_lost watches only once the robot
-/// carries the object (payload set).
+/// Nothing left between the fingers (they closed to below empty_width, as
+/// Grasp's min_width tells a grasp on nothing: a person who took the object
+/// back as the fingers closed, the pull not felt): Withdrawn as well. Waiting
+/// on, the robot held its closed fingers where the person's hand came back to
+/// offer it again (struck, g409_00790); the interrupt object_lost watches
+/// only once the robot carries the object (payload set). Not a narrowing of
+/// the grip alone: an object that turns in the fingers as the person lets go
+/// narrows it too, and opening then dropped it (g1_00060).
 /// Keys: release_share (0..1) with release_distance (m), release_wait
 /// (s) and hold_share (0.05..release_share, default release_share), or
-/// release_fraction (0..2); hold_time (s); slip_width (m, optional, default
+/// release_fraction (0..2); hold_time (s); empty_width (m, optional, default
 /// 0: not watched).
 class WaitForRelease : public HandoverState {
  public:
@@ -222,8 +224,7 @@ class WaitForRelease : public HandoverState {
   double carry_since_ = -1.0;  ///< s, since when the robot carries the load
   double hand_start_ = -1.0;  ///< m, hand to TCP when first seen in this state; < 0: not yet
   double since_ = -1.0;
-  double slip_width_ = 0.0;    ///< slip_width, m (0: not watched)
-  double held_width_ = 0.0;    ///< m, the widest the fingers held the object at in this state
+  double empty_width_ = 0.0;   ///< empty_width, m (0: not watched)
 };
 
 }  // namespace handover::fsm
