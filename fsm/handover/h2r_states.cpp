@@ -212,10 +212,8 @@ Grasp::Grasp()
 void Grasp::configure(const YamlReader& def) {
   pos_tol_ = readPositive(def, "position_tolerance", 0.2);
   rot_tol_ = readPositive(def, "orientation_tolerance_deg", 180.0) * M_PI / 180.0;
-  if (def.has("speed_tolerance")) speed_tol_ = readPositive(def, "speed_tolerance", 2.0);
   confirm_time_ = readRange(def, "confirm_time", 0.0, 5.0);
   stall_speed_ = readPositive(def, "stall_speed", 1.0);
-  min_width_ = readRange(def, "min_width", 0.0, 0.08);
   if (def.has("standoff")) readFunnel(def, readRange(def, "standoff", 0.0, 0.3), funnel_);
   if (def.has("touch_force")) {
     touch_force_ = readRange(def, "touch_force", 0.0, 100.0);
@@ -302,8 +300,7 @@ bool Grasp::onRun(HandoverContext& ctx) {
     slideToward(ctx, ctrl(), funnel_, funnelStandoff(f, funnel_.max_standoff, funnel_.margin), touch_shift_);
     // closes only on an object between the fingers (the funnel's last part)
     if (f.fit <= 0.0 || positionError(ctx.in.tcp_pose, correctedGraspFrame(ctx)) > pos_tol_ ||
-        !alignedWhenClosed(ctx.in, pos_tol_, rot_tol_, closingTime(ctx, f)) ||
-        (speed_tol_ > 0.0 && !alignedWithTarget(ctx.in, pos_tol_, rot_tol_, speed_tol_)))
+        !alignedWhenClosed(ctx.in, pos_tol_, rot_tol_, closingTime(ctx, f)))
       return false;
     ctx.force_before_grasp = ctx.force;  // reference for the release test
     ctrl().setGripper(ctx.params->gripper_close_width, ctx.params->gripForce(ctx.object.mass, ctx.comInTcp()));
@@ -329,7 +326,7 @@ bool Grasp::onRun(HandoverContext& ctx) {
     last_time_ = ctx.time;
   }
   if (ctx.time - closed_at_ < confirm_time_ || finger_speed_ > stall_speed_) return false;
-  setOutput(ctx.in.finger_width > min_width_ ? grasped_ : missed_);
+  setOutput(ctx.in.finger_width > ctx.params->gripper_empty_width ? grasped_ : missed_);
   return true;
 }
 
@@ -348,7 +345,6 @@ void WaitForRelease::configure(const YamlReader& def) {
     def.fail("needs release_share (the robot's load share, 0..1) or release_fraction (of m g)");
   }
   hold_time_ = readRange(def, "hold_time", 0.0, 5.0);
-  if (def.has("empty_width")) empty_width_ = readRange(def, "empty_width", 0.0, 0.08);
 }
 
 void WaitForRelease::onStart(HandoverContext& ctx) {
@@ -384,7 +380,7 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   // way (the object's estimate sits in that hand until the robot holds it, so the hand
   // alone cannot tell a person who let go and leaves). Not the load share: a pull down and
   // away reads as the object's weight
-  if (pull_.pulled(ctx, hold_time_) || ctx.in.finger_width < empty_width_) {
+  if (pull_.pulled(ctx, hold_time_) || ctx.in.finger_width < ctx.params->gripper_empty_width) {
     setOutput(withdrawn_);
     return true;
   }

@@ -104,10 +104,10 @@ class Approach : public HandoverState {
 /// TCP will be when the fingers meet the object (params.gripper.closing_speed:
 /// the fingers take (clearance x 2) / closing_speed; alignedWhenClosed),
 /// recording the force before the grasp. A close waited for the TCP to come
-/// to rest before (speed_tolerance, still honoured when given): 0.15 s of
-/// every take's last centimetres, while the fingers need as long to get there. Once closing for at least
+/// to rest before (a speed tolerance): 0.15 s of every take's last
+/// centimetres, while the fingers need as long to get there. Once closing for at least
 /// confirm_time and the fingers have stopped (slower than stall_speed), the
-/// grasp is confirmed by a finger width above min_width (not closed on
+/// grasp is confirmed by a finger width above params.gripper.empty_width (not closed on
 /// nothing), else missed. Withdrawn: before closing, the person withdrew
 /// (withdrawn()); while closing, they take the object back (TakeBack for
 /// touch_time).
@@ -123,8 +123,8 @@ class Approach : public HandoverState {
 /// middle of what can be off while one finger still lands), the funnel backs
 /// the fingers off and slides them in again. Not more than max_touches times
 /// per attempt.
-/// Keys: position_tolerance (m), orientation_tolerance_deg, speed_tolerance
-/// (m/s, optional), confirm_time (s), stall_speed (m/s), min_width (m), standoff (m,
+/// Keys: position_tolerance (m), orientation_tolerance_deg, confirm_time (s),
+/// stall_speed (m/s), standoff (m,
 /// optional, default 0: no funnel) with standoff_speed (m/s),
 /// standoff_feed_forward (bool, default false: the slide fed forward, and
 /// ended at the grasp also once closing) with standoff_acceleration (m/s^2,
@@ -149,7 +149,7 @@ class Grasp : public HandoverState {
   bool feelTouch(HandoverContext& ctx, const FingerFit& f);
 
   int grasped_, missed_, withdrawn_;
-  double pos_tol_ = 0.01, rot_tol_ = 0.17, speed_tol_ = 0.0, confirm_time_ = 0.3, min_width_ = 0.005;
+  double pos_tol_ = 0.01, rot_tol_ = 0.17, confirm_time_ = 0.3;
   double stall_speed_ = 0.01;
   GraspFunnel funnel_;           ///< max_standoff 0: no funnel
   bool closing_ = false;
@@ -191,8 +191,8 @@ class Grasp : public HandoverState {
 /// at the pose task's K = 6 (times the arm's task-space inertia: tens of
 /// N/m) half a newton the model missed as the weight came over sank the
 /// object by 2-3 cm.
-/// Nothing left between the fingers (they closed to below empty_width, as
-/// Grasp's min_width tells a grasp on nothing: a person who took the object
+/// Nothing left between the fingers (they closed to below
+/// params.gripper.empty_width, what tells Grasp a grasp on nothing: a person who took the object
 /// back as the fingers closed, the pull not felt): Withdrawn as well. Waiting
 /// on, the robot held its closed fingers where the person's hand came back to
 /// offer it again (struck, g409_00790); the interrupt object_lost watches
@@ -201,8 +201,7 @@ class Grasp : public HandoverState {
 /// narrows it too, and opening then dropped it (g1_00060).
 /// Keys: release_share (0..1) with release_distance (m), release_wait
 /// (s) and hold_share (0.05..release_share, default release_share), or
-/// release_fraction (0..2); hold_time (s); empty_width (m, optional, default
-/// 0: not watched).
+/// release_fraction (0..2); hold_time (s).
 class WaitForRelease : public HandoverState {
  public:
   WaitForRelease();
@@ -224,7 +223,6 @@ class WaitForRelease : public HandoverState {
   double carry_since_ = -1.0;  ///< s, since when the robot carries the load
   double hand_start_ = -1.0;  ///< m, hand to TCP when first seen in this state; < 0: not yet
   double since_ = -1.0;
-  double empty_width_ = 0.0;   ///< empty_width, m (0: not watched)
 };
 
 }  // namespace handover::fsm

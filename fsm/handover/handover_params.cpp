@@ -86,6 +86,7 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
   if (p.gripper_close_width >= p.gripper_open_width) g.child("close_width").fail("must be below open_width");
   p.gripper_force = positive(g, "force", 140.0);
   if (g.has("closing_speed")) p.gripper_closing_speed = positive(g, "closing_speed", 1.0);
+  if (g.has("empty_width")) p.gripper_empty_width = inRange(g, "empty_width", 0.0, 0.08);
   if (g.has("finger_half_span")) p.finger_half_span = inRange(g, "finger_half_span", 0.0, 0.05);
   {
     const YamlReader grip = g.child("grip");

@@ -57,6 +57,10 @@ struct HandoverParams {
   /// meets the object (gap - object width) / closing_speed later: Grasp
   /// closes when the TCP will be at the grasp then.
   double gripper_closing_speed = 0.0;
+  /// m: fingers closed nearer than this hold nothing (a grasp on nothing is
+  /// missed; fingers that close so far while waiting for a release lost the
+  /// object to the person)
+  double gripper_empty_width = 0.004;
   /// m: half the size of a finger's contact face, across and along the
   /// fingers: the lever by which a turn of the gripper against the object
   /// widens the object's footprint between the fingers (grasp_funnel.hpp)
