@@ -1,15 +1,11 @@
 #include "perception/observation_target.hpp"
+#include "interfaces/minimum_jerk.hpp"
 
 #include <algorithm>
 
 namespace handover::perception {
 
 namespace {
-
-double minimumJerk(double s) {
-  s = std::clamp(s, 0.0, 1.0);
-  return s * s * s * (10.0 + s * (-15.0 + 6.0 * s));
-}
 
 Eigen::Isometry3d interpolate(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, double phase) {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
@@ -68,7 +64,7 @@ const TargetOutput& ObservationTarget::update(double now, const PerceptionEstima
     Eigen::Isometry3d old;
     if (old_live_ && sourcePose(old_source_, old_attached_, estimate, old)) old_pose_ = old;
     const double s = (now - blend_start_) / settings_.blend_time;
-    out_.blend_phase = minimumJerk(s);
+    out_.blend_phase = minimumJerkPhase(s);
     if (s >= 1.0) blending_ = false;
     if (fresh) target = interpolate(old_pose_, target, out_.blend_phase);
   } else {

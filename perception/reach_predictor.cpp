@@ -1,14 +1,10 @@
 #include "perception/reach_predictor.hpp"
+#include "interfaces/minimum_jerk.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace handover::perception {
-
-double minimumJerkProgress(double u) {
-  u = std::clamp(u, 0.0, 1.0);
-  return u * u * u * (10.0 + u * (-15.0 + 6.0 * u));
-}
 
 ReachPredictor::ReachPredictor(const ReachPredictorSettings& settings)
     : settings_(settings),
@@ -120,7 +116,7 @@ double ReachPredictor::cost(int first, double t0, double T, Eigen::Vector3d* pa,
   Eigen::Vector3d p1 = Eigen::Vector3d::Zero(), sp = Eigen::Vector3d::Zero();
   for (int i = first; i < count_; ++i) {
     const Sample& x = at(i);
-    const double s = minimumJerkProgress((x.t - t0) / T);
+    const double s = minimumJerkPhase((x.t - t0) / T);
     const Eigen::Vector3d p = x.p - ref;
     n += 1.0;
     s1 += s;
@@ -198,7 +194,7 @@ void ReachPredictor::fit(double speed) {
   int i0 = first;
   while (i0 < count_ - 1 && at(i0).t < best_t0) ++i0;
   const Eigen::Quaterniond q0 = at(i0).q, q_now = at(count_ - 1).q;
-  const double progress = minimumJerkProgress(pred_.phase);
+  const double progress = minimumJerkPhase(pred_.phase);
   Eigen::Quaterniond q_end = q_now;
   if (progress >= 0.3) {
     const Eigen::AngleAxisd turned(q0.inverse() * q_now);

@@ -59,9 +59,6 @@ struct ReachPrediction {
   Eigen::Isometry3d end = Eigen::Isometry3d::Identity();     ///< fitted resting pose
 };
 
-/// The minimum-jerk phase s(u) for u in [0, 1] (clamped outside).
-double minimumJerkProgress(double u);
-
 class ReachPredictor {
  public:
   explicit ReachPredictor(const ReachPredictorSettings& settings = {});

@@ -11,6 +11,7 @@
 #include "perception/simulated_pose_sensor.hpp"
 #include "scenes/human/scripted_human.hpp"
 #include "scenes/scenario/scenario_parser.hpp"
+#include "interfaces/minimum_jerk.hpp"
 
 using namespace handover;
 
@@ -73,7 +74,7 @@ static void BM_ReachPredictorFit(benchmark::State& state) {
   const Eigen::Vector3d from(0.9, 0.2, 0.15), to(0.55, 0.05, 0.35);
   const auto pose = [&](double t) {
     Eigen::Isometry3d x = Eigen::Isometry3d::Identity();
-    x.translation() = from + perception::minimumJerkProgress((t - t0) / T) * (to - from);
+    x.translation() = from + minimumJerkPhase((t - t0) / T) * (to - from);
     return x;
   };
   const auto speed = [&](double t) { return (pose(t + 1e-4).translation() - pose(t).translation()).norm() / 1e-4; };

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scenes/human/minimum_jerk.hpp"
+#include "interfaces/minimum_jerk.hpp"
 
 namespace handover::human {
 

@@ -1,4 +1,5 @@
 #include "perception/reach_predictor.hpp"
+#include "interfaces/minimum_jerk.hpp"
 
 #include <cmath>
 #include <random>
@@ -14,7 +15,7 @@ struct Reach {
   Eigen::Vector3d from{0.9, 0.2, 0.15}, to{0.55, 0.05, 0.35};
   double t0 = 0.5, T = 1.2, turn = 1.5;
   Eigen::Isometry3d pose(double t) const {
-    const double s = minimumJerkProgress((t - t0) / T);
+    const double s = minimumJerkPhase((t - t0) / T);
     Eigen::Isometry3d x = Eigen::Isometry3d::Identity();
     x.translation() = from + s * (to - from);
     x.linear() = Eigen::AngleAxisd(s * turn, Eigen::Vector3d::UnitZ()).toRotationMatrix();
@@ -103,7 +104,7 @@ TEST(ReachPredictor, AWanderingHandIsNotLedAnywhere) {
   double late_lead = 0.0, farthest = 0.0;
   double a = 0.0;
   for (double t = 0.0; t < 4.0; t += 0.001) {
-    const double speed = t > 0.5 ? 0.3 * minimumJerkProgress((t - 0.5) / 0.5) : 0.0;
+    const double speed = t > 0.5 ? 0.3 * minimumJerkPhase((t - 0.5) / 0.5) : 0.0;
     a += speed / 0.1 * 0.001;
     Eigen::Isometry3d x = Eigen::Isometry3d::Identity();
     x.translation() = Eigen::Vector3d(0.6 + 0.1 * std::cos(a), 0.1 * std::sin(a), 0.3);

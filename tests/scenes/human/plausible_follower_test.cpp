@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "scenes/human/minimum_jerk.hpp"
+#include "interfaces/minimum_jerk.hpp"
 
 using namespace handover;
 using namespace handover::human;

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "scenes/human/minimum_jerk.hpp"
+#include "interfaces/minimum_jerk.hpp"
 #include "scenes/scenario/scenario_parser.hpp"
 
 using namespace handover;

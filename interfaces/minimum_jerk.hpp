@@ -1,11 +1,13 @@
 // Minimum-jerk profile (Flash and Hogan 1985): the phase of a rest-to-rest
 // motion, x(t) = x0 + (x1 - x0) * minimumJerkPhase(t / T).
-// Dimensionless; real-time safe.
+// Dimensionless; real-time safe. One definition for the simulated person's
+// reaches, the reach predictor's fit, the observation target's blend and
+// the state machine's own timed moves.
 #pragma once
 
 #include <algorithm>
 
-namespace handover::human {
+namespace handover {
 
 /// Phase in [0, 1] at normalised time s (clamped to [0, 1]): 10s^3 - 15s^4 + 6s^5.
 inline double minimumJerkPhase(double s) {
@@ -25,4 +27,4 @@ inline double minimumJerkAccel(double s) {
   return 60.0 * s * (1.0 - s) * (1.0 - 2.0 * s);
 }
 
-}  // namespace handover::human
+}  // namespace handover
