@@ -22,7 +22,10 @@ struct TaskTarget {
   enum class Kind { kConfigured, kPose, kJoints };
   Kind kind = Kind::kConfigured;
   Isometry pose = Isometry::Identity();  ///< world frame (kPose)
+  Vector6 velocity = Vector6::Zero();    ///< kPose: the pose's own motion, [m/s; rad/s] world axes (fed forward)
   Vector7 q = Vector7::Zero();           ///< rad, chain order (kJoints)
+  Vector7 qd = Vector7::Zero();          ///< kJoints: the reference's own velocity, rad/s (fed forward)
+  Vector7 qdd = Vector7::Zero();         ///< kJoints: ... and acceleration, rad/s^2 (fed forward)
 };
 
 /// A task's gains: the configured ones, or the given translation and

@@ -11,7 +11,10 @@ EndEffectorPoseTask::EndEffectorPoseTask(const Model& model, std::string name, c
 
 bool EndEffectorPoseTask::applyTarget(const TaskTarget& target) {
   if (target.kind == TaskTarget::Kind::kJoints) return false;
-  if (target.kind == TaskTarget::Kind::kPose) target_ = target.pose;
+  if (target.kind == TaskTarget::Kind::kPose) {
+    target_ = target.pose;
+    target_velocity_ = target.velocity;
+  }
   return true;
 }
 
@@ -32,7 +35,7 @@ void EndEffectorPoseTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen::M
   const Data& data = *ctx.data;
   const Isometry X = framePlacement(model, data, frame_id_);
   frameJacobian(model, data, frame_id_, J_);
-  const Vector6 v = J_ * data.v;
+  const Vector6 v = J_ * data.v - target_velocity_;
   const Vector6 drift = frameDrift(model, data, frame_id_);
   error_.head<3>() = X.translation() - target_.translation();
   error_.tail<3>() = orientationError(X.linear(), target_.linear());

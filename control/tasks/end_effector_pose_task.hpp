@@ -2,7 +2,11 @@
 // stow, and as the comparison baseline (a fixed handover location, no
 // observation). Rows: 6 over qddot, world axes [translation; rotation]:
 //
-//   J qddot = -K e - D J qdot - Jdot qdot,   e = [P - P*; q (-) q*]
+//   J qddot = -K e - D (J qdot - v*) - Jdot qdot,   e = [P - P*; q (-) q*]
+//
+// v*: the set-point's own velocity (zero for a fixed one): a set-point that
+// moves (fingers riding along with an object being pulled out of them) is
+// followed without the D v* / K lag a fixed-point PD leaves.
 //
 // Defaults: stiffness 2, damping 2 sqrt(2) for both parts. Real-time safe.
 #pragma once
@@ -26,6 +30,8 @@ class EndEffectorPoseTask : public Task {
 
   /// Target pose of the frame in the world.
   void setTarget(const Isometry& target) { target_ = target; }
+  /// The target's velocity, [linear m/s; angular rad/s] world axes (zero: at rest).
+  void setTargetVelocity(const Vector6& velocity) { target_velocity_ = velocity; }
   /// Generic handles: a pose target (world; kConfigured keeps the current
   /// one: a pose task has no configured target), gains (configured = the
   /// constructor's).
@@ -44,6 +50,7 @@ class EndEffectorPoseTask : public Task {
   PdGains translation_, orientation_;
   PdGains configured_translation_, configured_orientation_;
   Isometry target_ = Isometry::Identity();
+  Vector6 target_velocity_ = Vector6::Zero();
   Matrix6x7 J_ = Matrix6x7::Zero();
   Vector6 error_ = Vector6::Zero();
 };

@@ -7,7 +7,10 @@ PostureTask::PostureTask(std::string name, PdGains gains, const Vector7& q_ref)
 
 bool PostureTask::applyTarget(const TaskTarget& target) {
   if (target.kind == TaskTarget::Kind::kPose) return false;
-  q_ref_ = target.kind == TaskTarget::Kind::kJoints ? target.q : configured_q_ref_;
+  const bool joints = target.kind == TaskTarget::Kind::kJoints;
+  q_ref_ = joints ? target.q : configured_q_ref_;
+  qd_ref_ = joints ? target.qd : Vector7::Zero();
+  qdd_ref_ = joints ? target.qdd : Vector7::Zero();
   return true;
 }
 
@@ -19,7 +22,7 @@ bool PostureTask::applyGains(const TaskGains& gains) {
 void PostureTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen::MatrixXd> A, Eigen::Ref<Eigen::VectorXd> b) {
   const Data& data = *ctx.data;
   A.block<kArmDofs, kArmDofs>(0, VariableLayout::kQdd).setIdentity();
-  b.head<kArmDofs>() = -gains_.stiffness * (data.q - q_ref_) - gains_.damping * data.v;
+  b.head<kArmDofs>() = qdd_ref_ - gains_.stiffness * (data.q - q_ref_) - gains_.damping * (data.v - qd_ref_);
 }
 
 }  // namespace handover::control

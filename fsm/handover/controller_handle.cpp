@@ -65,10 +65,11 @@ void ControllerHandle::setTrackingOffset(const TrackingOffset& offset) {
   change(Channel::kTrackingOffset, next);
 }
 
-void ControllerHandle::setPoseTarget(const Isometry& tcp) {
+void ControllerHandle::setPoseTarget(const Isometry& tcp, const Vector6& velocity) {
   ScopedCommands next = ledger_->current();
   next.pose.active = true;
   next.pose.pose = tcp;
+  next.pose.velocity = velocity;
   change(Channel::kPose, next);
 }
 
@@ -78,10 +79,12 @@ void ControllerHandle::clearPoseTarget() {
   change(Channel::kPose, next);
 }
 
-void ControllerHandle::setPostureTarget(const Vector7& q) {
+void ControllerHandle::setPostureTarget(const Vector7& q, const Vector7& qd, const Vector7& qdd) {
   ScopedCommands next = ledger_->current();
   next.posture.active = true;
   next.posture.q = q;
+  next.posture.qd = qd;
+  next.posture.qdd = qdd;
   change(Channel::kPosture, next);
 }
 

@@ -57,9 +57,13 @@ class ControllerHandle {
   void setTrackingOffset(const TrackingOffset& offset);
   /// A fixed offset the controller may still resolve (free axis, twin).
   void setTrackingOffset(const Isometry& target_in_observed) { setTrackingOffset(TrackingOffset{target_in_observed, false}); }
-  void setPoseTarget(const Isometry& tcp_in_world);
+  /// The pose task's set-point (world) and its own velocity ([m/s; rad/s],
+  /// world axes; zero: a fixed set-point), fed forward.
+  void setPoseTarget(const Isometry& tcp_in_world, const Vector6& velocity = Vector6::Zero());
   void clearPoseTarget();
-  void setPostureTarget(const Vector7& q);
+  /// The posture task's reference (rad) and its motion (rad/s, rad/s^2; zero:
+  /// a fixed reference), fed forward.
+  void setPostureTarget(const Vector7& q, const Vector7& qd = Vector7::Zero(), const Vector7& qdd = Vector7::Zero());
   void clearPostureTarget();
   void setSpeedScale(double scale);
   void setTrackingStiffness(double translation, double orientation);

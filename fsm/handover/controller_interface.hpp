@@ -45,7 +45,10 @@ struct TaskTarget {
   enum class Kind { kConfigured, kPose, kJoints };
   Kind kind = Kind::kConfigured;
   Isometry pose = Isometry::Identity();
+  Vector6 velocity = Vector6::Zero();  ///< kPose: the pose's own motion [m/s; rad/s], world axes
   Vector7 q = Vector7::Zero();
+  Vector7 qd = Vector7::Zero();   ///< kJoints: the joints' reference velocity, rad/s (fed forward)
+  Vector7 qdd = Vector7::Zero();  ///< kJoints: ... and acceleration, rad/s^2
 };
 
 /// A task's gains for setTaskGains: inactive = the configured gains; else

@@ -41,6 +41,7 @@ void sendPose(ControllerInterface& ctl, const H& t, const ScopedCommands& v) {
     TaskTarget target;
     target.kind = TaskTarget::Kind::kPose;
     target.pose = v.pose.pose;
+    target.velocity = v.pose.velocity;
     ctl.setTaskTarget(t.pose, target);
   }
   ctl.setTaskEnabled(t.pose, v.pose.active);
@@ -50,6 +51,8 @@ void sendPosture(ControllerInterface& ctl, const H& t, const ScopedCommands& v) 
   if (v.posture.active) {
     target.kind = TaskTarget::Kind::kJoints;
     target.q = v.posture.q;
+    target.qd = v.posture.qd;
+    target.qdd = v.posture.qdd;
   }
   ctl.setTaskTarget(t.posture, target);
 }
@@ -96,13 +99,13 @@ static_assert(rowsInChannelOrder(), "row i is channel i");
 
 }  // namespace
 
-bool operator==(const PoseCommand& a, const PoseCommand& b) { return a.active == b.active && same(a.pose, b.pose); }
+bool operator==(const PoseCommand& a, const PoseCommand& b) { return a.active == b.active && same(a.pose, b.pose) && a.velocity == b.velocity; }
 bool operator==(const TrackingOffset& a, const TrackingOffset& b) {
   return a.planned == b.planned && same(a.target_in_observed, b.target_in_observed) &&
          (!a.planned || a.joint_plan == b.joint_plan) && a.approach_speed == b.approach_speed &&
          a.approach_acceleration == b.approach_acceleration;
 }
-bool operator==(const PostureCommand& a, const PostureCommand& b) { return a.active == b.active && a.q == b.q; }
+bool operator==(const PostureCommand& a, const PostureCommand& b) { return a.active == b.active && a.q == b.q && a.qd == b.qd && a.qdd == b.qdd; }
 bool operator==(const GainsCommand& a, const GainsCommand& b) {
   return a.active == b.active && a.translation == b.translation && a.orientation == b.orientation;
 }

@@ -22,10 +22,13 @@ namespace handover::fsm {
 struct PoseCommand {
   bool active = false;
   Isometry pose = Isometry::Identity();  ///< TCP in the world
+  Vector6 velocity = Vector6::Zero();    ///< the set-point's motion [m/s; rad/s], world axes (zero: fixed)
 };
 struct PostureCommand {
   bool active = false;
-  Vector7 q = Vector7::Zero();  ///< rad, the 7 arm joints in chain order
+  Vector7 q = Vector7::Zero();    ///< rad, the 7 arm joints in chain order
+  Vector7 qd = Vector7::Zero();   ///< rad/s, the reference's motion (zero: fixed)
+  Vector7 qdd = Vector7::Zero();  ///< rad/s^2
 };
 /// A task's phase gains (inactive: the configured ones): the tracking
 /// task's (gains) and the pose task's (pose_gains).

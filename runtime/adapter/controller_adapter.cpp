@@ -34,7 +34,10 @@ void ControllerAdapter::setTaskTarget(int task, const fsm::TaskTarget& target) {
            : target.kind == fsm::TaskTarget::Kind::kJoints ? control::TaskTarget::Kind::kJoints
                                                            : control::TaskTarget::Kind::kConfigured;
   t.pose = target.pose;
+  t.velocity = target.velocity;
   t.q = target.q;
+  t.qd = target.qd;
+  t.qdd = target.qdd;
   controller_.setTaskTarget(task, t);
 }
 

@@ -33,6 +33,21 @@ TEST(PostureTask, RowsAreJointPdLaw) {
   EXPECT_TRUE(A.leftCols(7).isIdentity());
   EXPECT_TRUE(A.rightCols(6).isZero());
   EXPECT_LT((b - (-10.0 * (q - ref) - 6.0 * v)).norm(), 1e-12);
+
+  // a moving reference (a timed joint-space move): its acceleration and velocity fed forward
+  TaskTarget moving;
+  moving.kind = TaskTarget::Kind::kJoints;
+  moving.q = ref;
+  moving.qd << 0.2, -0.1, 0.0, 0.3, 0.0, 0.1, -0.2;
+  moving.qdd << 1.0, 0.0, -0.5, 0.0, 0.2, 0.0, 0.3;
+  ASSERT_TRUE(task.applyTarget(moving));
+  task.compute(ctx, A, b);
+  EXPECT_LT((b - (moving.qdd - 10.0 * (q - ref) - 6.0 * (v - moving.qd))).norm(), 1e-12);
+  // back to the configured posture: at rest again
+  ASSERT_TRUE(task.applyTarget(TaskTarget{}));
+  task.setTarget(ref);
+  task.compute(ctx, A, b);
+  EXPECT_LT((b - (-10.0 * (q - ref) - 6.0 * v)).norm(), 1e-12);
 }
 
 TEST(EndEffectorPoseTask, RowsPredictTcpAcceleration) {
@@ -80,4 +95,23 @@ TEST(EndEffectorPoseTask, RowsPredictTcpAcceleration) {
   law.head<3>() = -2.0 * (X.translation() - target.translation()) - 3.0 * vel.head<3>();
   law.tail<3>() = -4.0 * orientationError(X.linear(), target.linear()) - 5.0 * vel.tail<3>();
   EXPECT_LT((b2 - b - law).norm(), 1e-9);
+
+  // a moving set-point: the damping acts on the velocity relative to it
+  Vector6 target_velocity;
+  target_velocity << 0.3, -0.1, 0.2, 0.05, 0.0, -0.1;
+  TaskTarget moving;
+  moving.kind = TaskTarget::Kind::kPose;
+  moving.pose = target;
+  moving.velocity = target_velocity;
+  ASSERT_TRUE(task.applyTarget(moving));
+  Eigen::VectorXd b3(6);
+  task.compute(ctx, A, b3);
+  Vector6 fed;
+  fed << 3.0 * target_velocity.head<3>(), 5.0 * target_velocity.tail<3>();
+  EXPECT_LT((b3 - b2 - fed).norm(), 1e-9);
+  // a pose target without a velocity is at rest again
+  moving.velocity.setZero();
+  ASSERT_TRUE(task.applyTarget(moving));
+  task.compute(ctx, A, b3);
+  EXPECT_LT((b3 - b2).norm(), 1e-12);
 }

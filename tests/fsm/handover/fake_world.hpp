@@ -31,8 +31,10 @@ struct RecordingController : ControllerInterface {
   double offset_speed = 0.0, offset_acceleration = 0.0;  // the offset's slide fed forward (m/s, m/s^2)
   bool pose_active = false;
   Isometry pose = Isometry::Identity();
+  Vector6 pose_velocity = Vector6::Zero();  // the set-point's motion fed forward
   bool posture_active = false;
   Vector7 posture = Vector7::Zero();
+  Vector7 posture_velocity = Vector7::Zero();  // the reference's motion fed forward
   double speed = 1.0;
   bool gains_active = false;     // values only (not in `calls`)
   double gains_translation = 0.0, gains_orientation = 0.0;  // 1/s^2, when gains_active
@@ -85,10 +87,12 @@ struct RecordingController : ControllerInterface {
     if (task == 1 && t.kind == TaskTarget::Kind::kPose) {
       pose_active = true;
       pose = t.pose;
+      pose_velocity = t.velocity;
       if (record) calls.push_back("pose");
     } else if (task == 2) {
       posture_active = t.kind == TaskTarget::Kind::kJoints;
       if (posture_active) posture = t.q;
+      posture_velocity = posture_active ? t.qd : Vector7::Zero();
       if (record) calls.push_back(posture_active ? "posture" : "clear posture");
     }
   }
@@ -211,10 +215,12 @@ struct World {
     const double step = std::min(dh.norm(), hand_speed * kDt);
     hand_vel = dh.norm() > 1e-12 ? Vector3(dh.normalized() * step / kDt) : Vector3::Zero();
     hand += hand_vel * kDt;
-    // the TCP: first order toward the desired pose, speed-scaled and capped
+    // the TCP: first order toward the desired pose, speed-scaled and capped;
+    // a moving pose set-point's velocity fed forward, as the pose task does
     const Isometry d = desired(c);
     const Vector3 err = d.translation() - tcp.translation();
-    Vector3 v = 5.0 * err * c.speed;
+    const bool fed = c.pose_active && !(c.tracking && c.observation != ObservationTarget::kNone);
+    Vector3 v = (5.0 * err + (fed ? Vector3(c.pose_velocity.head<3>()) : Vector3::Zero())) * c.speed;
     if (v.norm() > 0.5) v = v.normalized() * 0.5;
     if (arm_stuck) v.setZero();
     tcp_vel = v;
