@@ -43,6 +43,18 @@ inline double extentAlong(const ObjectShape& s, const Eigen::Vector3d& u_in) {
   return 0.0;
 }
 
+/// Radius (m) of the smallest sphere about the shape's centre that holds it;
+/// 0 when the shape is unknown.
+inline double boundingRadius(const ObjectShape& s) {
+  switch (s.kind) {
+    case ObjectShape::Kind::kSphere: return s.size.x();
+    case ObjectShape::Kind::kCylinder: return std::hypot(s.size.x(), 0.5 * s.size.y());
+    case ObjectShape::Kind::kBox: return 0.5 * s.size.norm();
+    case ObjectShape::Kind::kUnknown: break;
+  }
+  return 0.0;
+}
+
 /// Signed distance (m) from the point `p` (object frame) to the shape's
 /// surface: negative inside; 0 when the shape is unknown.
 inline double signedDistance(const ObjectShape& s, const Eigen::Vector3d& p) {

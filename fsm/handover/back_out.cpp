@@ -2,12 +2,15 @@
 
 #include <algorithm>
 
+#include "interfaces/minimum_jerk.hpp"
+
 namespace handover::fsm {
 
 BackOut::BackOut() : clear_(declareOutput("Clear")) {}
 
 void BackOut::configure(const YamlReader& def) {
   distance_ = readPositive(def, "distance", 0.3);
+  duration_ = readPositive(def, "duration", 5.0);
   pos_tol_ = readPositive(def, "position_tolerance", 0.1);
   yield_force_ = readPositive(def, "yield_force", 200.0);
   yield_rate_ = readRange(def, "yield_rate", 0.0, 1.0);
@@ -16,10 +19,11 @@ void BackOut::configure(const YamlReader& def) {
 
 void BackOut::onStart(HandoverContext& ctx) {
   start_ = ctx.in.tcp_pose;
+  start_time_ = ctx.in.time;
   yielded_.setZero();
+  ride_.start(ctx);
   last_time_ = ctx.in.time;
   Isometry goal = start_;
-  goal.translation() -= distance_ * start_.linear().col(2);
   ctrl().enableTracking(false);
   ctrl().setObservationTarget(ObservationTarget::kNone);
   ctrl().setPoseTarget(goal);
@@ -33,12 +37,22 @@ bool BackOut::onRun(HandoverContext& ctx) {
   const Vector3 contact = ctx.in.tool_contact.head<3>();
   const Vector3 push = contact - contact.dot(axis) * axis;
   const double excess = push.norm() - yield_force_;
+  Vector6 velocity = Vector6::Zero();
   if (excess > 0.0 && yielded_.norm() < yield_distance_) {
-    yielded_ += (yield_rate_ * excess * dt / push.norm()) * push;
-    Isometry goal = start_;
-    goal.translation() += yielded_ - distance_ * start_.linear().col(2);
-    ctrl().setPoseTarget(goal);
+    // the goal's rate fed forward: the arm gives way now, not D / K later
+    velocity.head<3>() = (yield_rate_ * excess / push.norm()) * push;
+    yielded_ += dt * velocity.head<3>();
   }
+  // riding along with the object leaving between the fingers
+  Vector3 ride, ride_velocity;
+  ride_.follow(ctx.in, ride, ride_velocity);
+  velocity.head<3>() += ride_velocity;
+  // straight back along the approach axis on a minimum-jerk profile, its rate fed forward
+  const double u = (ctx.in.time - start_time_) / duration_;
+  velocity.head<3>() -= (distance_ * minimumJerkRate(u) / duration_) * axis;
+  Isometry goal = start_;
+  goal.translation() += yielded_ + ride - distance_ * minimumJerkPhase(u) * axis;
+  ctrl().setPoseTarget(goal, velocity);
   // progress along the approach axis only (the yield is across it): a
   // sideways push by the person must not hold the fingers in place
   const double backed = -(ctx.in.tcp_pose.translation() - start_.translation()).dot(axis);

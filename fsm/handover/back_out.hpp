@@ -13,17 +13,25 @@
 // across the approach axis beyond `yield_force` (HandoverInput::tool_contact),
 // at `yield_rate` per newton above it, at most `yield_distance` in all, so the
 // finger rides along with the object, lightly, while the gripper backs off it.
+//
+// A force only tells once the finger is struck, so the goal also rides along
+// with the object as it is seen leaving (ReleaseRide),
+// and it backs out on a minimum-jerk profile over `duration`, its rate fed
+// forward: a set-point step at the pose task's gains crept back 1.5 cm in the
+// first 0.18 s while the receiver took the object into a finger.
 #pragma once
 
 #include "fsm/handover/handover_state.hpp"
+#include "fsm/handover/release_ride.hpp"
 
 namespace handover::fsm {
 
 /// [Clear] Tracking off, observation none; pose task to the TCP pose
-/// `distance` behind the current one along its z axis, moved along the
-/// contact force across that axis while it exceeds yield_force. Clear once the
-/// TCP has moved back along that axis to within position_tolerance of
-/// `distance`. Keys: distance (m), position_tolerance
+/// `distance` behind the current one along its z axis, reached on a
+/// minimum-jerk profile over `duration`; moved along the contact force across
+/// that axis while it exceeds yield_force, and along with the object leaving
+/// (ReleaseRide). Clear once the TCP has moved back along that axis to within
+/// position_tolerance of `distance`. Keys: distance (m), duration (s), position_tolerance
 /// (m), yield_force (N), yield_rate (m/s per N), yield_distance (m); `timeout`
 /// (s) gives output Timeout (the transition table decides; usually the same as
 /// Clear). Real-time safe.
@@ -36,11 +44,13 @@ class BackOut : public HandoverState {
 
  private:
   int clear_;
-  double distance_ = 0.08, pos_tol_ = 0.01;
+  double distance_ = 0.08, duration_ = 0.3, pos_tol_ = 0.01;
+  double start_time_ = 0.0;
   double yield_force_ = 20.0, yield_rate_ = 0.01, yield_distance_ = 0.15;  // config/fsm.yaml sets them
   Isometry start_ = Isometry::Identity();  ///< the TCP when the fingers let go
   Vector3 yielded_ = Vector3::Zero();      ///< m, how far the goal moved along the contact force
   double last_time_ = 0.0;
+  ReleaseRide ride_;
 };
 
 }  // namespace handover::fsm

@@ -4,6 +4,7 @@
 
 #include "fsm/handover/lift_off.hpp"
 #include "fsm/handover/perception_checks.hpp"
+#include "fsm/handover/timed_move.hpp"
 
 namespace handover::fsm {
 
@@ -86,13 +87,30 @@ void Retract::onStart(HandoverContext& ctx) {
   }
   lift_from_ = tcp.translation();
   lift_direction_ = liftOffDirection(tcp, lift_elevation_);
+  lift_start_ = tcp;
+  // timed (params.carry): a minimum-jerk profile whose acceleration the grip holds
+  lift_duration_ = ctx.params->carry_joint_speed > 0.0
+                       ? minimumJerkDuration(0.0, 0.0, lift_distance_, ctx.params->grip_acceleration,
+                                             ctx.params->carry_min_duration)
+                       : 0.0;
   Isometry lifted = tcp;
-  lifted.translation() += lift_distance_ * lift_direction_;
+  if (lift_duration_ <= 0.0) lifted.translation() += lift_distance_ * lift_direction_;
   ctrl().setPoseTarget(lifted);
 }
 
 bool Retract::onRun(HandoverContext& ctx) {
-  if (lifting_) {
+  if (lifting_ && lift_duration_ > 0.0) {
+    // the timed lift-off: along its profile, then the carry from rest
+    const double u = elapsed(ctx) / lift_duration_;
+    Isometry goal = lift_start_;
+    goal.translation() += lift_distance_ * minimumJerkPhase(u) * lift_direction_;
+    Vector6 velocity = Vector6::Zero();
+    velocity.head<3>() = (lift_distance_ * minimumJerkRate(u) / lift_duration_) * lift_direction_;
+    ctrl().setPoseTarget(goal, velocity);
+    if (u < 1.0 && elapsed(ctx) < lift_max_time_) return false;
+    lifting_ = false;
+    carry_.start(ctx, ctrl(), named_goal_, up_axis_);
+  } else if (lifting_) {
     // within `tolerance` of the lift-off point the carry takes over from a TCP
     // still moving up and back: no stop between the two
     const double lifted = (ctx.in.tcp_pose.translation() - lift_from_).dot(lift_direction_);

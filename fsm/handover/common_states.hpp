@@ -39,7 +39,9 @@ class Rest : public HandoverState {
 /// (optional, after a take: {distance: m, elevation_deg, tolerance: m,
 /// max_time: s}; with the object held, the TCP first moves `distance` along
 /// liftOffDirection (lift_off.hpp), orientation held, and the carry starts
-/// within `tolerance` of that point or after max_time, whichever is first).
+/// within `tolerance` of that point or after max_time, whichever is first;
+/// with timed moves (params.carry) the lift-off follows a minimum-jerk
+/// profile, its rate fed forward, and the carry starts at its end).
 class Retract : public HandoverState {
  public:
   Retract();
@@ -57,7 +59,9 @@ class Retract : public HandoverState {
   // the lift-off (lift_off.hpp); distance 0 = none
   double lift_distance_ = 0.0, lift_elevation_ = 0.0, lift_tolerance_ = 0.0, lift_max_time_ = 0.0;
   bool lifting_ = false;
+  double lift_duration_ = 0.0;  ///< s of the timed lift-off (0: a set-point step)
   Vector3 lift_from_ = Vector3::Zero(), lift_direction_ = Vector3::Zero();
+  Isometry lift_start_ = Isometry::Identity();  ///< the TCP when the lift-off began
   Isometry named_goal_ = Isometry::Identity();  ///< the carry's named pose, kept while lifting
   Vector3 up_axis_ = Vector3::UnitZ();          ///< the object's way up when the state started
 };

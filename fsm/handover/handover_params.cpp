@@ -123,6 +123,12 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
   poses.finish();
   p.object_in_hand = readPose(n.child("object_in_hand"));
   if (auto s = n.optionalChild("object_in_hand_seat")) p.object_in_hand_seat = s->checkRange(s->asDouble(), 0.0, 0.1);
+  if (auto r = n.optionalChild("release_ride")) p.release_ride = r->asBool();
+  if (auto c = n.optionalChild("carry")) {
+    p.carry_joint_speed = inRange(*c, "joint_speed", 0.0, 2.6);
+    p.carry_min_duration = inRange(*c, "min_duration", 0.05, 10.0);
+    c->finish();
+  }
   n.finish();
   return p;
 }

@@ -108,6 +108,16 @@ struct HandoverParams {
   /// m: a given object is lowered in the hand until its lowest point is at
   /// most this far above the grip point (seated_in_hand.hpp; 0: as placed).
   double object_in_hand_seat = 0.0;
+  /// The open gripper rides along with an object the receiver takes out of
+  /// it, across the approach axis, until it is clear of the fingers
+  /// (release_ride.hpp); false: it holds its place.
+  bool release_ride = false;
+  /// Timed carries and lift-offs (timed_move.hpp): the peak joint speed of a
+  /// carry's joint-space move (rad/s) and the shortest move (s); the held
+  /// object's acceleration is bounded by grip_acceleration. 0 speed: the
+  /// moves are set-point steps closed by the tasks' own gains.
+  double carry_joint_speed = 0.0;
+  double carry_min_duration = 0.3;
 };
 
 /// Reads and validates `params`; throws InputError naming file, key, line.

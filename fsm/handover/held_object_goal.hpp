@@ -12,10 +12,13 @@
 // carry posts a request (carry_request.hpp) and heads for the named pose at
 // once; the planning stage answers before the next step, and the carry
 // switches to the placement in that step (one cycle on the named pose).
+// The move in joint space is timed (timed_move.hpp, params.carry): a
+// minimum-jerk profile fed forward to the posture task.
 // RT safe: no search, no allocation.
 #pragma once
 
 #include "fsm/handover/handover_context.hpp"
+#include "fsm/handover/timed_move.hpp"
 
 namespace handover::fsm {
 
@@ -57,6 +60,7 @@ class HeldObjectCarry {
              double receiver_stop = 0.0) {
     goal_ = named;
     request_ = 0;
+    move_.stop();
     ctrl.setPoseTarget(named);
     if (ctx.planner == nullptr) return;
     if (!ctx.ledger->payloadSet()) {
@@ -68,17 +72,34 @@ class HeldObjectCarry {
   }
 
   /// Adopts the answer to this carry's request once it has come: a found
-  /// placement replaces the named pose by the move in joint space; none keeps
-  /// the named pose. Call at the start of every onRun.
+  /// placement replaces the named pose by the move in joint space, timed from
+  /// where the arm is then (params.carry); none keeps the named pose. Then
+  /// moves the posture reference along that profile. Call at the start of
+  /// every onRun.
   void update(HandoverContext& ctx, ControllerHandle& ctrl) {
+    if (move_.active()) {
+      Vector7 q, qd, qdd;
+      move_.sample(ctx.in.time, q, qd, qdd);
+      ctrl.setPostureTarget(q, qd, qdd);
+    }
     if (request_ == 0) return;
     const ArmPlacement* answer = ctx.carry.answerTo(request_);
     if (answer == nullptr) return;
     request_ = 0;
     if (!answer->found) return;
     ctrl.clearPoseTarget();
-    ctrl.setPostureTarget(answer->q);
     goal_ = answer->tcp;
+    const HandoverParams& p = *ctx.params;
+    if (p.carry_joint_speed <= 0.0) {
+      ctrl.setPostureTarget(answer->q);
+      return;
+    }
+    const double duration =
+        minimumJerkDuration((answer->q - ctx.in.q).cwiseAbs().maxCoeff(), p.carry_joint_speed,
+                            (answer->tcp.translation() - ctx.in.tcp_pose.translation()).norm(), p.grip_acceleration,
+                            p.carry_min_duration);
+    move_.start(ctx.in.q, answer->q, duration, ctx.in.time);
+    ctrl.setPostureTarget(ctx.in.q);  // the profile's start, at rest
   }
 
   /// Withdraws a request still waiting (the state ends first).
@@ -96,6 +117,7 @@ class HeldObjectCarry {
  private:
   Isometry goal_ = Isometry::Identity();
   int request_ = 0;  ///< the request awaiting its answer (0: none)
+  JointMove move_;   ///< the timed move to the placement's configuration
 };
 
 }  // namespace handover::fsm

@@ -172,10 +172,13 @@ void Release::onStart(HandoverContext& ctx) {
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
   ctrl().enableTracking(false);
-  ctrl().setPoseTarget(ctx.in.tcp_pose);
+  hold_ = ctx.in.tcp_pose;
+  ride_.start(ctx);
+  ctrl().setPoseTarget(hold_);
 }
 
 bool Release::onRun(HandoverContext& ctx) {
+  ride_.hold(ctrl(), hold_, ctx.in);
   if (ctx.in.finger_width < min_width_) return false;
   setOutput(opened_);
   return true;
@@ -193,10 +196,13 @@ void ConfirmGone::onStart(HandoverContext& ctx) {
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   since_ = -1.0;
   ctrl().enableTracking(false);
-  ctrl().setPoseTarget(ctx.in.tcp_pose);
+  hold_ = ctx.in.tcp_pose;
+  ride_.start(ctx);
+  ctrl().setPoseTarget(hold_);
 }
 
 bool ConfirmGone::onRun(HandoverContext& ctx) {
+  ride_.hold(ctrl(), hold_, ctx.in);
   const double weight = ctx.object.mass * ctx.params->gravity;
   // the wrist lost gone_fraction of the weight since the hold was recorded,
   // or the robot carries at most the rest of it (load share): a receiver who

@@ -1,6 +1,7 @@
 // Robot to human: the robot presents the object, the person takes it.
 #pragma once
 
+#include "fsm/handover/release_ride.hpp"
 #include "fsm/handover/handover_state.hpp"
 #include "fsm/handover/held_object_goal.hpp"
 #include "fsm/handover/receiver_take.hpp"
@@ -86,8 +87,9 @@ class DetectPull : public HandoverState {
   double since_ = -1.0;
 };
 
-/// [Opened] Opens the gripper, holding the TCP; done when the fingers are
-/// open wider than min_width. Keys: min_width (m).
+/// [Opened] Opens the gripper, holding the TCP where it was, moved along with
+/// the object as the receiver takes it (ReleaseRide);
+/// done when the fingers are open wider than min_width. Keys: min_width (m).
 class Release : public HandoverState {
  public:
   Release();
@@ -98,13 +100,16 @@ class Release : public HandoverState {
  private:
   int opened_;
   double min_width_ = 0.07;
+  Isometry hold_ = Isometry::Identity();
+  ReleaseRide ride_;
 };
 
 /// [Gone] Fingers open wider than min_width and at least gone_fraction of
 /// the object's weight left the sensor (relative to the force recorded by
 /// DetectPull), or the robot's load share is at most 1 - gone_fraction (a
 /// receiver who already carried part of the weight when DetectPull recorded
-/// the force), for hold_time; then clears the payload.
+/// the force), for hold_time; then clears the payload. Holds the TCP as
+/// Release does (riding along with the object being taken).
 /// Keys: min_width (m), gone_fraction, hold_time (s).
 class ConfirmGone : public HandoverState {
  public:
@@ -117,6 +122,8 @@ class ConfirmGone : public HandoverState {
   int gone_;
   double min_width_ = 0.07, fraction_ = 0.7, hold_time_ = 0.1;
   double since_ = -1.0;
+  Isometry hold_ = Isometry::Identity();
+  ReleaseRide ride_;
 };
 
 }  // namespace handover::fsm

@@ -184,6 +184,20 @@ TEST(PlannedTargets, PayloadCentreOfMassFollowsTheGraspClosedOn) {
   EXPECT_LT((ctx.comInTcp() - sidePlan(0, 0.0).target_in_observed.inverse().translation()).norm(), 1e-12);
 }
 
+/// The carry's joint-space move (timed, params.carry) ends at `q`: its
+/// reference heads there at once (velocity along q - reference) and reaches
+/// it at rest within `seconds`.
+::testing::AssertionResult carriesTo(Rig& rig, const Vector7& q, double seconds = 5.0) {
+  const Vector7 heading = q - rig.ctl.posture;
+  if (heading.norm() > 1e-9 && rig.ctl.posture_velocity.norm() > 0.0 &&
+      rig.ctl.posture_velocity.normalized().dot(heading.normalized()) < 1.0 - 1e-9)
+    return ::testing::AssertionFailure() << "the reference moves elsewhere";
+  const bool reached = rig.runUntil(
+      [&] { return rig.ctl.posture.isApprox(q, 1e-9) && rig.ctl.posture_velocity.norm() < 1e-12; }, seconds);
+  if (!reached) return ::testing::AssertionFailure() << "the reference is at " << rig.ctl.posture.transpose();
+  return ::testing::AssertionSuccess();
+}
+
 TEST(PlannedTargets, HeldObjectIsCarriedUprightInJointSpace) {
   Rig rig;
   FakePlanner planner;
@@ -197,7 +211,35 @@ TEST(PlannedTargets, HeldObjectIsCarriedUprightInJointSpace) {
   EXPECT_TRUE(planner.last_object_in_tcp.isApprox(rig.world.object_plan.target_in_observed.inverse()));
   EXPECT_FALSE(rig.ctl.pose_active);   // no TCP pose task: the joints move
   EXPECT_TRUE(rig.ctl.posture_active);
-  EXPECT_TRUE(rig.ctl.posture.isApprox(planner.answer.q));
+  EXPECT_TRUE(carriesTo(rig, planner.answer.q));
+}
+
+// The carry to the placement is a timed joint-space move (params.carry): a
+// minimum-jerk profile whose fastest joint peaks at joint_speed (0.8 rad/s),
+// its velocity fed forward, ending at the placement's configuration at rest
+// after 1.875 * travel / joint_speed. A set-point step settled in ~2 s at the
+// posture task's K = 10 and crawled over its last 20 %.
+TEST(PlannedTargets, TheCarryIsATimedMoveAtTheCarrysJointSpeed) {
+  Rig rig;
+  FakePlanner planner;
+  planner.answer = uprightAnswer();  // 0.7 rad on every joint from the toy's q = 0
+  rig.fsm->setPlanner(&planner);
+  rig.world.object_plan = sidePlan(2, 0.1);
+  takeUntilRetract(rig);
+  ASSERT_TRUE(rig.runUntil([&] { return rig.ctl.posture_active; }, 3.0));
+  const double speed = rig.fsm->params().carry_joint_speed;
+  ASSERT_GT(speed, 0.0);
+  const double start = rig.world.time;
+  const double expected = 1.875 * 0.7 / speed;
+  double peak = 0.0;
+  ASSERT_TRUE(rig.runUntil(
+      [&] {
+        peak = std::max(peak, rig.ctl.posture_velocity.cwiseAbs().maxCoeff());
+        return rig.ctl.posture.isApprox(planner.answer.q, 1e-12);
+      },
+      5.0));
+  EXPECT_NEAR(rig.world.time - start, expected, 0.01);
+  EXPECT_NEAR(peak, speed, 0.01 * speed);
 }
 
 TEST(PlannedTargets, TheCarrySearchRunsOutsideTheStepAndIsAdoptedOnceAnswered) {
@@ -233,7 +275,8 @@ TEST(PlannedTargets, TheCarrySearchRunsOutsideTheStepAndIsAdoptedOnceAnswered) {
   rig.step();
   EXPECT_FALSE(rig.ctl.pose_active);
   EXPECT_TRUE(rig.ctl.posture_active);
-  EXPECT_TRUE(rig.ctl.posture.isApprox(planner.answer.q));
+  rig.step();
+  EXPECT_TRUE(carriesTo(rig, planner.answer.q));
   // one search per request
   rig.fsm->plan();
   rig.step();
@@ -273,7 +316,8 @@ TEST(PlannedTargets, AnAnswerToAnEarlierStatesRequestIsNeverAdopted) {
   rig.step();
   EXPECT_EQ(planner.calls, 2);
   EXPECT_FALSE(rig.ctl.pose_active);
-  EXPECT_TRUE(rig.ctl.posture.isApprox(Vector7::Constant(-0.4)));
+  rig.step();
+  EXPECT_TRUE(carriesTo(rig, Vector7::Constant(-0.4)));
 }
 
 TEST(PlannedTargets, ARequestLeftByAnEndedStateIsNotSearched) {
@@ -341,7 +385,7 @@ TEST(PlannedTargets, AnEmptyGripperAlsoMovesInJointSpaceToTheNamedPoseWithItsTur
   EXPECT_TRUE(planner.last_position.isApprox(safe.translation()));
   EXPECT_TRUE(planner.last_up_axis.isApprox(handedUpAxis(Eigen::Matrix3d(safe.linear()))));
   EXPECT_FALSE(rig.ctl.pose_active);
-  EXPECT_TRUE(rig.ctl.posture.isApprox(planner.answer.q));
+  EXPECT_TRUE(carriesTo(rig, planner.answer.q));
 }
 
 TEST(PlannedTargets, AGiveAsksWhereToWaitOnceItSeesTheReceiverAndOutOfTheirWay) {
