@@ -71,21 +71,27 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   // was tried: the noisy velocity of a person standing still started 33 of 300 approaches
   // that ended withdrawn at once, a retry lost each.)
   const Vector3 pos = (p.anticipate_reach ? restPose(body) : body.pose).translation();
-  const bool usable = fresh(body, p.max_data_age) && inWorkspace(ctx, hand_) && (!hand_ || ctx.in.hand_open);
+  const bool home_known = hand_ ? ctx.home_hand_known : ctx.home_object_known;
+  const Vector3& home = hand_ ? ctx.home_hand : ctx.home_object;
+  // the workspace, or its edge where the arm's own kinematics reach the body (the planner's IK):
+  // inside the band a person must leave to count as withdrawn (withdraw.workspace_margin), so an
+  // approach it starts is not ended at once. A receiver's hand 5 mm past the box's side was never
+  // taken for one that came, and the give ended aborted (g421_00123)
+  constexpr double kRestPlace = 0.05;  // m, as WaitAgain's home_radius: still where it was first seen
+  const bool left_home = home_known && (pos - home).norm() > std::max(kRestPlace, home_radius_);
+  const bool in_workspace = inWorkspace(ctx, hand_) || (left_home && latestPlan(ctx, hand_).valid &&
+                                                        inWorkspace(ctx, hand_, p.withdraw_workspace_margin));
+  const bool usable = fresh(body, p.max_data_age) && in_workspace && (!hand_ || ctx.in.hand_open);
   if (!usable) {
     rest_.reset();
     return false;
   }
   bool ready = speedToward(p.workspace.center, body) > approach_speed_;
-  const bool home_known = hand_ ? ctx.home_hand_known : ctx.home_object_known;
-  const Vector3& home = hand_ ? ctx.home_hand : ctx.home_object;
   const bool at_home = home_radius_ > 0.0 && home_known && (pos - home).norm() < home_radius_;
   // resting, on its displacement (rest_window.hpp): a person holding the object still after a
   // dropout was never seen to rest by the noisy speed, and the robot gave up on them
   // within reach: near the shoulder, or where the arm's own kinematics reach it (the planner's IK),
   // not at the place the person held it before they offered it (a rest there is no offer)
-  constexpr double kRestPlace = 0.05;  // m, as WaitAgain's home_radius: still where it was first seen
-  const bool left_home = home_known && (pos - home).norm() > std::max(kRestPlace, home_radius_);
   const bool within_reach =
       (pos - p.workspace.center).norm() <= p.reach_radius || (left_home && latestPlan(ctx, hand_).valid);
   if (!within_reach || at_home) {

@@ -139,6 +139,10 @@ DetectPull::DetectPull() : pulled_(declareOutput("Pulled")) {}
 void DetectPull::configure(const YamlReader& def) {
   threshold_ = readPositive(def, "pull_threshold", 100.0);
   hold_time_ = readRange(def, "hold_time", 0.0, 5.0);
+  if (def.has("moved_time")) {
+    moved_time_ = readPositive(def, "moved_time", 10.0);
+    moved_ = declareOutput("Moved");
+  }
 }
 
 void DetectPull::onStart(HandoverContext& ctx) {
@@ -146,6 +150,9 @@ void DetectPull::onStart(HandoverContext& ctx) {
   since_ = -1.0;
   ctx.force_holding = ctx.force;  // removes the object's (and hand's) weight from the test
   ctx.interaction_holding = ctx.interaction;  // and a hand resting on it
+  moved_since_ = -1.0;
+  hand_seen_at_start_ = fresh(ctx.in.hand, ctx.params->max_data_age);
+  hand_at_start_ = ctx.in.hand.pose.translation();
   ctrl().enableTracking(false);
   // hold still so a pull builds force - where the object was to be
   // presented: Present accepts a TCP short of it by up to its tolerance,
@@ -154,6 +161,10 @@ void DetectPull::onStart(HandoverContext& ctx) {
 }
 
 bool DetectPull::onRun(HandoverContext& ctx) {
+  if (moved_ >= 0 && handMoved(ctx)) {
+    setOutput(moved_);
+    return true;
+  }
   if ((ctx.interaction - ctx.interaction_holding).norm() <= threshold_ || !receiverMayHoldIt(ctx)) {
     since_ = -1.0;
     return false;
@@ -162,6 +173,22 @@ bool DetectPull::onRun(HandoverContext& ctx) {
   if (ctx.time - since_ < hold_time_) return false;
   setOutput(pulled_);
   return true;
+}
+
+bool DetectPull::handMoved(HandoverContext& ctx) {
+  constexpr double kMoved = kReceiverGripReach;  // m: farther, the grip left where the object was put for it
+  const bool seen = fresh(ctx.in.hand, ctx.params->max_data_age);
+  if (seen && !hand_seen_at_start_) {  // first seen now: from here
+    hand_seen_at_start_ = true;
+    hand_at_start_ = ctx.in.hand.pose.translation();
+  }
+  const bool away = seen && (ctx.in.hand.pose.translation() - hand_at_start_).norm() > kMoved && !receiverMayHoldIt(ctx);
+  if (!away) {
+    moved_since_ = -1.0;
+    return false;
+  }
+  if (moved_since_ < 0.0) moved_since_ = ctx.time;
+  return ctx.time - moved_since_ >= moved_time_;
 }
 
 Release::Release() : opened_(declareOutput("Opened")) {}

@@ -73,7 +73,13 @@ class Present : public HandoverState {
 /// [Pulled] Holds the TCP still and records the filtered force (object and
 /// hand weight included); pulled when the filtered force differs from it by
 /// more than pull_threshold for hold_time. Set a `timeout` for "no pull".
-/// Keys: pull_threshold (N), hold_time (s).
+/// With `moved_time` (s), [Moved]: the receiver's hand, seen, has gone more
+/// than 5 cm from where it was when the wait began and the object is not in
+/// its grip (receiverMayHoldIt) for that long: they put their hand elsewhere
+/// to take it, and the object is presented there again (a receiver who
+/// moved their hand 9 cm waited 10 s for an object held still where their
+/// hand had been, and gave up: g421_00463).
+/// Keys: pull_threshold (N), hold_time (s), moved_time (s, optional).
 class DetectPull : public HandoverState {
  public:
   DetectPull();
@@ -82,9 +88,13 @@ class DetectPull : public HandoverState {
   bool onRun(HandoverContext& ctx) override;
 
  private:
-  int pulled_;
-  double threshold_ = 3.0, hold_time_ = 0.05;
-  double since_ = -1.0;
+  bool handMoved(HandoverContext& ctx);
+
+  int pulled_, moved_ = -1;
+  double threshold_ = 3.0, hold_time_ = 0.05, moved_time_ = 0.0;
+  double since_ = -1.0, moved_since_ = -1.0;
+  Vector3 hand_at_start_ = Vector3::Zero();
+  bool hand_seen_at_start_ = false;
 };
 
 /// [Opened] Opens the gripper, holding the TCP where it was, moved along with

@@ -113,6 +113,51 @@ TEST(HandoverR2H, TheOpeningGripperRidesAlongWithTheObjectBeingTaken) {
   EXPECT_NEAR(offset().dot(across), 0.042, 1e-6);
 }
 
+// A receiver's hand that rests just past the workspace's side (inside the
+// band they must leave to count as withdrawn) is one that came, where the
+// arm's own kinematics reach it (a valid presentation plan): 5 mm past the
+// box's side, the give waited until it ended aborted (g421_00123). Without a
+// plan there it is not.
+TEST(HandoverR2H, AReceiverAtTheWorkspacesEdgeThatTheArmReachesIsApproached) {
+  const Vector3 past_edge(0.45, -0.605, 0.25);  // box y >= -0.60
+  for (const bool reachable : {true, false}) {
+    SCOPED_TRACE(reachable);
+    Rig rig(true);
+    rig.world.hand_plan.valid = reachable;
+    ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+    // around the workspace, beyond the band, then in to just past its side
+    for (const Vector3& via : {Vector3(1.0, -0.80, 0.25), Vector3(0.45, -0.80, 0.25)}) {
+      rig.world.moveHand(via, 2.0);
+      ASSERT_FALSE(rig.runUntilState("/Approach", 1.0)) << rig.fsm->activePath();
+    }
+    rig.world.moveHand(past_edge, 0.3);
+    EXPECT_EQ(rig.runUntilState("/Approach", 4.0), reachable) << rig.fsm->activePath();
+  }
+}
+
+// While the robot waits for the pull, the receiver puts their hand elsewhere
+// (10 cm along, out of reach of the object) to take it: the object is
+// presented there again (Moved -> Approach -> Present), instead of being held
+// still where the hand had been until DetectPull timed out and the receiver
+// gave up (g421_00463). A hand still at the object keeps the wait.
+TEST(HandoverR2H, AReceiverWhoMovesTheirHandElsewhereIsPresentedTheObjectThere) {
+  io::ObjectShape ball;  // known: where the hand is against the object tells
+  ball.kind = io::ObjectShape::Kind::kSphere;
+  ball.size = Vector3(0.03, 0.0, 0.0);
+  Rig rig(true, false, ball);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+  rig.world.moveHand(kReceive, 0.5);
+  ASSERT_TRUE(rig.runUntilState("DetectPull", 20.0)) << rig.fsm->activePath();
+  rig.runFor(1.0);  // a hand that stays: still waiting for its pull
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "DetectPull")) << rig.fsm->activePath();
+  const Vector3 elsewhere = kReceive + Vector3(0.0, 0.10, 0.0);
+  rig.world.moveHand(elsewhere, 0.3);
+  ASSERT_TRUE(rig.runUntilState("/Approach", 2.0)) << rig.fsm->activePath();
+  ASSERT_TRUE(rig.runUntilState("DetectPull", 10.0)) << rig.fsm->activePath();
+  // presented where the hand is now
+  EXPECT_LT((rig.world.object - (rig.world.hand + rig.world.object_in_hand)).norm(), 0.02);
+}
+
 // The receiver pulls the object into a finger while the fingers still
 // straddle it: the back-out goal yields along the push (beyond yield_force)
 // instead of holding its place against a person who does not yield, and the
@@ -159,7 +204,8 @@ TEST(HandoverR2H, APushFromAHandAwayFromTheObjectIsNoPull) {
   rig.world.hand = at_object + Vector3(0.0, -0.12, 0.0);
   rig.world.moveHand(rig.world.hand, 0.5);
   rig.world.brush = Vector3(5.0, 3.0, 0.0);  // beyond the 3 N pull threshold
-  EXPECT_FALSE(rig.runUntilState("Release", 1.0)) << rig.fsm->activePath();
+  // (for less than DetectPull's moved_time: longer, the object is presented where the hand went)
+  EXPECT_FALSE(rig.runUntilState("Release", 0.2)) << rig.fsm->activePath();
   EXPECT_NE(rig.fsm->activePath().find("DetectPull"), std::string::npos) << rig.fsm->activePath();
   // back at the object, the same force is the pull
   rig.world.hand = at_object;
