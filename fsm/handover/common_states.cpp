@@ -60,6 +60,7 @@ void Retract::configure(const YamlReader& def) {
     lift_elevation_ = readPositive(*lift, "elevation_deg", 90.0) * kDeg;
     lift_tolerance_ = readPositive(*lift, "tolerance", lift_distance_);
     lift_max_time_ = readPositive(*lift, "max_time", 5.0);
+    if (auto timed = lift->optionalChild("timed")) lift_timed_ = timed->asBool();
   }
 }
 
@@ -88,11 +89,10 @@ void Retract::onStart(HandoverContext& ctx) {
   lift_from_ = tcp.translation();
   lift_direction_ = liftOffDirection(tcp, lift_elevation_);
   lift_start_ = tcp;
-  // timed (params.carry): a minimum-jerk profile whose acceleration the grip holds
-  lift_duration_ = ctx.params->carry_joint_speed > 0.0
-                       ? minimumJerkDuration(0.0, 0.0, lift_distance_, ctx.params->grip_acceleration,
-                                             ctx.params->carry_min_duration)
-                       : 0.0;
+  // timed: a minimum-jerk profile whose acceleration the grip holds
+  lift_duration_ = lift_timed_ ? minimumJerkDuration(0.0, 0.0, lift_distance_, ctx.params->grip_acceleration,
+                                                     ctx.params->carry_min_duration)
+                               : 0.0;
   Isometry lifted = tcp;
   if (lift_duration_ <= 0.0) lifted.translation() += lift_distance_ * lift_direction_;
   ctrl().setPoseTarget(lifted);

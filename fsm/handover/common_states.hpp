@@ -40,8 +40,10 @@ class Rest : public HandoverState {
 /// max_time: s}; with the object held, the TCP first moves `distance` along
 /// liftOffDirection (lift_off.hpp), orientation held, and the carry starts
 /// within `tolerance` of that point or after max_time, whichever is first;
-/// with timed moves (params.carry) the lift-off follows a minimum-jerk
-/// profile, its rate fed forward, and the carry starts at its end).
+/// with `timed: true` the lift-off follows a minimum-jerk profile whose peak
+/// acceleration is the grip's (params.gripper.grip.acceleration), at least
+/// params.carry.min_duration long, its rate fed forward, and the carry
+/// starts at its end).
 class Retract : public HandoverState {
  public:
   Retract();
@@ -58,7 +60,7 @@ class Retract : public HandoverState {
   HeldObjectCarry carry_;               ///< the named pose, or an upright placement of a held object near it
   // the lift-off (lift_off.hpp); distance 0 = none
   double lift_distance_ = 0.0, lift_elevation_ = 0.0, lift_tolerance_ = 0.0, lift_max_time_ = 0.0;
-  bool lifting_ = false;
+  bool lifting_ = false, lift_timed_ = false;
   double lift_duration_ = 0.0;  ///< s of the timed lift-off (0: a set-point step)
   Vector3 lift_from_ = Vector3::Zero(), lift_direction_ = Vector3::Zero();
   Isometry lift_start_ = Isometry::Identity();  ///< the TCP when the lift-off began
