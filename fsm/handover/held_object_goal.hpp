@@ -12,8 +12,9 @@
 // carry posts a request (carry_request.hpp) and heads for the named pose at
 // once; the planning stage answers before the next step, and the carry
 // switches to the placement in that step (one cycle on the named pose).
-// The move in joint space is timed (timed_move.hpp, params.carry): a
-// minimum-jerk profile fed forward to the posture task.
+// With params.carry.joint_speed > 0 the move in joint space is timed
+// (timed_move.hpp): a minimum-jerk profile fed forward to the posture task
+// (off as shipped: config/fsm.yaml says why).
 // RT safe: no search, no allocation.
 #pragma once
 
@@ -72,10 +73,10 @@ class HeldObjectCarry {
   }
 
   /// Adopts the answer to this carry's request once it has come: a found
-  /// placement replaces the named pose by the move in joint space, timed from
-  /// where the arm is then (params.carry); none keeps the named pose. Then
-  /// moves the posture reference along that profile. Call at the start of
-  /// every onRun.
+  /// placement replaces the named pose by the move in joint space (timed from
+  /// where the arm is then with params.carry.joint_speed > 0, the posture
+  /// reference then moved along that profile); none keeps the named pose.
+  /// Call at the start of every onRun.
   void update(HandoverContext& ctx, ControllerHandle& ctrl) {
     if (move_.active()) {
       Vector7 q, qd, qdd;
