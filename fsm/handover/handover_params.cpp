@@ -126,6 +126,7 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
   if (auto r = n.optionalChild("release_ride")) p.release_ride = r->asBool();
   if (auto c = n.optionalChild("carry")) {
     p.carry_joint_speed = inRange(*c, "joint_speed", 0.0, 2.6);
+    if (c->has("joint_acceleration")) p.carry_joint_acceleration = inRange(*c, "joint_acceleration", 0.1, 15.0);
     p.carry_min_duration = inRange(*c, "min_duration", 0.05, 10.0);
     c->finish();
   }

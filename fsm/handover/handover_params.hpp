@@ -117,6 +117,7 @@ struct HandoverParams {
   /// object's acceleration is bounded by grip_acceleration. 0 speed: the
   /// moves are set-point steps closed by the tasks' own gains.
   double carry_joint_speed = 0.0;
+  double carry_joint_acceleration = 4.0;  ///< rad/s^2, the carry's ramps' peak
   double carry_min_duration = 0.3;
 };
 

@@ -13,7 +13,7 @@
 // once; the planning stage answers before the next step, and the carry
 // switches to the placement in that step (one cycle on the named pose).
 // With params.carry.joint_speed > 0 the move in joint space is timed
-// (timed_move.hpp): a minimum-jerk profile fed forward to the posture task
+// (timed_move.hpp): a cruise profile fed forward to the posture task
 // (off as shipped: config/fsm.yaml says why).
 // RT safe: no search, no allocation.
 #pragma once
@@ -95,11 +95,11 @@ class HeldObjectCarry {
       ctrl.setPostureTarget(answer->q);
       return;
     }
-    const double duration =
-        minimumJerkDuration((answer->q - ctx.in.q).cwiseAbs().maxCoeff(), p.carry_joint_speed,
-                            (answer->tcp.translation() - ctx.in.tcp_pose.translation()).norm(), p.grip_acceleration,
-                            p.carry_min_duration);
-    move_.start(ctx.in.q, answer->q, duration, ctx.in.time);
+    move_.start(ctx.in.q, answer->q,
+                cruiseFor((answer->q - ctx.in.q).cwiseAbs().maxCoeff(), p.carry_joint_speed,
+                          p.carry_joint_acceleration, (answer->tcp.translation() - ctx.in.tcp_pose.translation()).norm(),
+                          p.grip_acceleration, p.carry_min_duration),
+                ctx.in.time);
     ctrl.setPostureTarget(ctx.in.q);  // the profile's start, at rest
   }
 
