@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "interfaces/minimum_jerk.hpp"
+#include "fsm/handover/timed_move.hpp"
 
 namespace handover::fsm {
 
@@ -48,10 +48,11 @@ bool BackOut::onRun(HandoverContext& ctx) {
   ride_.follow(ctx.in, ride, ride_velocity);
   velocity.head<3>() += ride_velocity;
   // straight back along the approach axis on a minimum-jerk profile, its rate fed forward
-  const double u = (ctx.in.time - start_time_) / duration_;
-  velocity.head<3>() -= (distance_ * minimumJerkRate(u) / duration_) * axis;
+  Vector3 back, back_velocity;
+  minimumJerkAlong(distance_, duration_, ctx.in.time - start_time_, -axis, back, back_velocity);
+  velocity.head<3>() += back_velocity;
   Isometry goal = start_;
-  goal.translation() += yielded_ + ride - distance_ * minimumJerkPhase(u) * axis;
+  goal.translation() += yielded_ + ride + back;
   ctrl().setPoseTarget(goal, velocity);
   // progress along the approach axis only (the yield is across it): a
   // sideways push by the person must not hold the fingers in place

@@ -1,5 +1,6 @@
 #include "fsm/handover/common_states.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "fsm/handover/lift_off.hpp"
@@ -90,7 +91,7 @@ void Retract::onStart(HandoverContext& ctx) {
   lift_direction_ = liftOffDirection(tcp, lift_elevation_);
   lift_start_ = tcp;
   // timed: a minimum-jerk profile whose acceleration the grip holds
-  lift_duration_ = lift_timed_ ? minimumJerkDuration(0.0, 0.0, lift_distance_, ctx.params->grip_acceleration,
+  lift_duration_ = lift_timed_ ? minimumJerkDuration(lift_distance_, ctx.params->grip_acceleration,
                                                      ctx.params->carry_min_duration)
                                : 0.0;
   Isometry lifted = tcp;
@@ -101,13 +102,14 @@ void Retract::onStart(HandoverContext& ctx) {
 bool Retract::onRun(HandoverContext& ctx) {
   if (lifting_ && lift_duration_ > 0.0) {
     // the timed lift-off: along its profile, then the carry from rest
-    const double u = elapsed(ctx) / lift_duration_;
+    Vector3 lifted, lift_velocity;
+    minimumJerkAlong(lift_distance_, lift_duration_, elapsed(ctx), lift_direction_, lifted, lift_velocity);
     Isometry goal = lift_start_;
-    goal.translation() += lift_distance_ * minimumJerkPhase(u) * lift_direction_;
+    goal.translation() += lifted;
     Vector6 velocity = Vector6::Zero();
-    velocity.head<3>() = (lift_distance_ * minimumJerkRate(u) / lift_duration_) * lift_direction_;
+    velocity.head<3>() = lift_velocity;
     ctrl().setPoseTarget(goal, velocity);
-    if (u < 1.0 && elapsed(ctx) < lift_max_time_) return false;
+    if (elapsed(ctx) < std::min(lift_duration_, lift_max_time_)) return false;
     lifting_ = false;
     carry_.start(ctx, ctrl(), named_goal_, up_axis_);
   } else if (lifting_) {

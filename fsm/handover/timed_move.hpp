@@ -23,16 +23,22 @@ namespace handover::fsm {
 constexpr double kMinimumJerkPeakRate = 1.875;
 constexpr double kMinimumJerkPeakAccel = 5.7735;
 
-/// Duration (s) of a rest-to-rest minimum-jerk move: the joint travelling
-/// farthest (`joint_travel`, rad) no faster than `joint_speed` (rad/s), a TCP
-/// path of `tcp_travel` (m) no harder than `acceleration` (m/s^2, taken on
-/// its straight line), at least `min_duration`.
-inline double minimumJerkDuration(double joint_travel, double joint_speed, double tcp_travel, double acceleration,
-                                  double min_duration) {
+/// Duration (s) of a rest-to-rest minimum-jerk move of `travel` (m) no
+/// harder than `acceleration` (m/s^2; 0: unbounded), at least `min_duration`.
+inline double minimumJerkDuration(double travel, double acceleration, double min_duration) {
   double T = min_duration;
-  if (joint_speed > 0.0) T = std::max(T, kMinimumJerkPeakRate * std::abs(joint_travel) / joint_speed);
-  if (acceleration > 0.0) T = std::max(T, std::sqrt(kMinimumJerkPeakAccel * std::abs(tcp_travel) / acceleration));
+  if (acceleration > 0.0) T = std::max(T, std::sqrt(kMinimumJerkPeakAccel * std::abs(travel) / acceleration));
   return T;
+}
+
+/// A straight minimum-jerk move of `distance` (m) along the unit `direction`
+/// over `duration` (s), at `t` s from its start: the offset from where it
+/// began (m) and its velocity (m/s), for a pose set-point and its feed-forward.
+inline void minimumJerkAlong(double distance, double duration, double t, const Vector3& direction, Vector3& offset,
+                             Vector3& velocity) {
+  const double u = t / duration;
+  offset = (distance * minimumJerkPhase(u)) * direction;
+  velocity = (distance * minimumJerkRate(u) / duration) * direction;
 }
 
 /// A rest-to-rest phase profile p(t) from 0 to 1 that cruises: the rate
@@ -121,7 +127,6 @@ class JointMove {
     qd = pd * d;
     qdd = pdd * d;
   }
-  const Vector7& goal() const { return to_; }
 
  private:
   Vector7 from_ = Vector7::Zero(), to_ = Vector7::Zero();

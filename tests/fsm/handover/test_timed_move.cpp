@@ -10,17 +10,26 @@
 namespace handover::fsm {
 namespace {
 
-TEST(MinimumJerkDuration, TheTightestLimitSetsIt) {
-  // 1 rad at 0.8 rad/s peak: 1.875 / 0.8 s
-  EXPECT_NEAR(minimumJerkDuration(1.0, 0.8, 0.0, 3.0, 0.3), 1.875 / 0.8, 1e-12);
+TEST(MinimumJerkDuration, TheAccelerationOrTheFloorSetsIt) {
   // 0.1 m at 3 m/s^2 peak: sqrt(5.7735 * 0.1 / 3)
-  EXPECT_NEAR(minimumJerkDuration(0.0, 0.8, 0.1, 3.0, 0.3), std::sqrt(5.7735 * 0.1 / 3.0), 1e-12);
+  EXPECT_NEAR(minimumJerkDuration(0.1, 3.0, 0.3), std::sqrt(5.7735 * 0.1 / 3.0), 1e-12);
   // a short move takes the floor
-  EXPECT_NEAR(minimumJerkDuration(0.01, 0.8, 0.001, 3.0, 0.3), 0.3, 1e-12);
-  // a limit of 0 does not bound it
-  EXPECT_NEAR(minimumJerkDuration(5.0, 0.0, 5.0, 0.0, 0.3), 0.3, 1e-12);
-  // the joint-speed bound holds the fastest joint to that speed, whatever its sign
-  EXPECT_NEAR(minimumJerkDuration(-2.0, 1.0, 0.0, 0.0, 0.1), 3.75, 1e-12);
+  EXPECT_NEAR(minimumJerkDuration(0.001, 3.0, 0.3), 0.3, 1e-12);
+  // an acceleration of 0 does not bound it
+  EXPECT_NEAR(minimumJerkDuration(5.0, 0.0, 0.3), 0.3, 1e-12);
+}
+
+TEST(MinimumJerkAlong, GoesItsDistanceAlongItsDirectionFromRestToRest) {
+  const Vector3 dir = Vector3(1.0, -2.0, 2.0).normalized();
+  Vector3 x, v;
+  minimumJerkAlong(0.08, 0.3, 0.0, dir, x, v);
+  EXPECT_LT(x.norm() + v.norm(), 1e-12);
+  minimumJerkAlong(0.08, 0.3, 0.15, dir, x, v);  // half way at half time, at its peak 1.875 x 0.08 / 0.3
+  EXPECT_LT((x - 0.04 * dir).norm(), 1e-12);
+  EXPECT_LT((v - (1.875 * 0.08 / 0.3) * dir).norm(), 1e-12);
+  minimumJerkAlong(0.08, 0.3, 0.5, dir, x, v);  // done: there, at rest
+  EXPECT_LT((x - 0.08 * dir).norm(), 1e-12);
+  EXPECT_LT(v.norm(), 1e-12);
 }
 
 // The cruise: up to the joint speed along a smooth ramp, held, down again;
