@@ -34,6 +34,7 @@ struct TaskGains {
   bool configured = true;
   PdGains translation;  ///< stiffness 1/s^2, damping 1/s
   PdGains orientation;
+  double max_speed = 0.0;  ///< m/s, a tracking task's speed limit; 0 = the configured one
 };
 
 class Task {

@@ -1,5 +1,7 @@
 #include "control/tasks/trajectory_tracking_task.hpp"
 
+#include <algorithm>
+
 #include "control/so3.hpp"
 
 namespace handover::control {
@@ -23,6 +25,10 @@ TrajectoryTrackingTask::TrajectoryTrackingTask(const Model& model, std::string n
 bool TrajectoryTrackingTask::applyGains(const TaskGains& gains) {
   if (gains.configured) setGains(configured_translation_, configured_orientation_);
   else setGains(gains.translation, gains.orientation);
+  // a phase may close in slower than the configured limit (never faster)
+  max_speed_ = configured_max_speed_;
+  if (!gains.configured && gains.max_speed > 0.0)
+    max_speed_ = configured_max_speed_ > 0.0 ? std::min(configured_max_speed_, gains.max_speed) : gains.max_speed;
   return true;
 }
 

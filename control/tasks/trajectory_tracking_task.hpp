@@ -60,9 +60,11 @@ class TrajectoryTrackingTask : public Task {
   /// v_max, near it the PD converges at its own stiffness. The logged error
   /// stays the true one. Start-up call.
   void setSpeedLimits(double max_speed, double max_angular_speed) {
-    max_speed_ = max_speed;
+    max_speed_ = configured_max_speed_ = max_speed;
     max_angular_speed_ = max_angular_speed;
   }
+  /// m/s, the speed limit in force (a phase's own or the configured one).
+  double maxSpeed() const { return max_speed_; }
   const PdGains& translationGains() const { return translation_; }
   const PdGains& orientationGains() const { return orientation_; }
   int frameId() const { return frame_id_; }
@@ -78,6 +80,7 @@ class TrajectoryTrackingTask : public Task {
   PdGains translation_, orientation_;
   PdGains configured_translation_, configured_orientation_;
   double max_speed_ = 0.0, max_angular_speed_ = 0.0;  ///< m/s, rad/s (0 = none)
+  double configured_max_speed_ = 0.0;                 ///< m/s: max_speed_ outside a phase's own (applyGains)
   GraspOffset offset_;
   Matrix6x7 J_ = Matrix6x7::Zero();
   Vector6 error_ = Vector6::Zero();

@@ -110,14 +110,14 @@ void ControllerHandle::undo() {
 }
 
 void ControllerHandle::setStiffness(Channel c, GainsCommand ScopedCommands::*gains, double translation,
-                                    double orientation) {
+                                    double orientation, double max_speed) {
   ScopedCommands next = ledger_->current();
-  (next.*gains) = GainsCommand{true, translation, orientation};
+  (next.*gains) = GainsCommand{true, translation, orientation, max_speed};
   change(c, next);
 }
 
-void ControllerHandle::setTrackingStiffness(double translation, double orientation) {
-  setStiffness(Channel::kGains, &ScopedCommands::gains, translation, orientation);
+void ControllerHandle::setTrackingStiffness(double translation, double orientation, double max_speed) {
+  setStiffness(Channel::kGains, &ScopedCommands::gains, translation, orientation, max_speed);
 }
 
 void ControllerHandle::clearStiffness(Channel c, GainsCommand ScopedCommands::*gains) {

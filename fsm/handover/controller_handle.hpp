@@ -66,7 +66,9 @@ class ControllerHandle {
   void setPostureTarget(const Vector7& q, const Vector7& qd = Vector7::Zero(), const Vector7& qdd = Vector7::Zero());
   void clearPostureTarget();
   void setSpeedScale(double scale);
-  void setTrackingStiffness(double translation, double orientation);
+  /// The tracking task's stiffnesses (1/s^2, critically damped) and the
+  /// fastest (m/s) its PD may ask the TCP to close in (0: as configured).
+  void setTrackingStiffness(double translation, double orientation, double max_speed = 0.0);
   void clearTrackingStiffness();
   /// The pose task's stiffnesses (1/s^2, critically damped) for this state.
   void setPoseStiffness(double translation, double orientation);
@@ -101,7 +103,8 @@ class ControllerHandle {
   /// Saves the ledger's value of `c` on first touch, then applies `next`.
   void change(Channel c, const ScopedCommands& next);
   /// Activates the gains member `gains` (channel `c`) with these stiffnesses.
-  void setStiffness(Channel c, GainsCommand ScopedCommands::*gains, double translation, double orientation);
+  void setStiffness(Channel c, GainsCommand ScopedCommands::*gains, double translation, double orientation,
+                    double max_speed = 0.0);
   /// Deactivates it: the task's configured stiffnesses again.
   void clearStiffness(Channel c, GainsCommand ScopedCommands::*gains);
   CommandLedger* ledger_ = nullptr;

@@ -52,11 +52,13 @@ struct TaskTarget {
 };
 
 /// A task's gains for setTaskGains: inactive = the configured gains; else
-/// critically damped stiffnesses (1/s^2) for translation and orientation.
+/// critically damped stiffnesses (1/s^2) for translation and orientation,
+/// and (tracking task) the fastest the PD may ask the frame to close in.
 struct TaskGains {
   bool active = false;
   double translation = 0.0;
   double orientation = 0.0;
+  double max_speed = 0.0;  ///< m/s; 0 = the task's configured limit
 };
 
 /// Which sensed body the observation task follows.

@@ -69,6 +69,7 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
     if (auto align = t->optionalChild("align")) {
       p.align_tracking_translation_stiffness = inRange(*align, "translation_stiffness", 0.0, 1000.0);
       p.align_tracking_orientation_stiffness = inRange(*align, "orientation_stiffness", 0.0, 1000.0);
+      if (align->has("max_speed")) p.align_tracking_max_speed = inRange(*align, "max_speed", 0.01, 5.0);
       align->finish();
     }
     if (auto a = t->optionalChild("anticipate_reach")) p.anticipate_reach = a->asBool();

@@ -35,6 +35,10 @@ struct HandoverParams {
   /// strike it.
   double align_tracking_translation_stiffness = 0.0;
   double align_tracking_orientation_stiffness = 0.0;
+  /// m/s, the fastest the aligning fingers close in on the object (0 = the
+  /// tracking task's own limit): stiff gains converge sooner, and a
+  /// fingertip that lands on a misjudged object lands no faster than this.
+  double align_tracking_max_speed = 0.0;
   /// The follow gains once the tracked body has arrived: at rest the
   /// tracking stiffens to these, and eases back to the follow gains as the
   /// body's speed rises to arrive_speed (linear between). The soft follow

@@ -107,7 +107,8 @@ bool operator==(const TrackingOffset& a, const TrackingOffset& b) {
 }
 bool operator==(const PostureCommand& a, const PostureCommand& b) { return a.active == b.active && a.q == b.q && a.qd == b.qd && a.qdd == b.qdd; }
 bool operator==(const GainsCommand& a, const GainsCommand& b) {
-  return a.active == b.active && a.translation == b.translation && a.orientation == b.orientation;
+  return a.active == b.active && a.translation == b.translation && a.orientation == b.orientation &&
+         a.max_speed == b.max_speed;
 }
 
 bool operator==(const TaskSwitches& a, const TaskSwitches& b) {

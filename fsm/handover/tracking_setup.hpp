@@ -32,7 +32,8 @@ enum class TrackingGains { kFollow, kAlign };
 inline void setTrackingGains(const HandoverParams& p, ControllerHandle& ctrl, TrackingGains gains) {
   if (gains == TrackingGains::kAlign && p.align_tracking_translation_stiffness > 0.0 &&
       p.align_tracking_orientation_stiffness > 0.0) {
-    ctrl.setTrackingStiffness(p.align_tracking_translation_stiffness, p.align_tracking_orientation_stiffness);
+    ctrl.setTrackingStiffness(p.align_tracking_translation_stiffness, p.align_tracking_orientation_stiffness,
+                              p.align_tracking_max_speed);
   } else if (p.tracking_translation_stiffness > 0.0 && p.tracking_orientation_stiffness > 0.0) {
     ctrl.setTrackingStiffness(p.tracking_translation_stiffness, p.tracking_orientation_stiffness);
   }
@@ -56,7 +57,8 @@ inline void setPhaseGainsForSpeed(const HandoverParams& p, ControllerHandle& ctr
   }
   const double moving = std::clamp(speed / p.arrive_speed, 0.0, 1.0);
   ctrl.setTrackingStiffness(rest_t + moving * (p.tracking_translation_stiffness - rest_t),
-                            rest_o + moving * (p.tracking_orientation_stiffness - rest_o));
+                            rest_o + moving * (p.tracking_orientation_stiffness - rest_o),
+                            align ? p.align_tracking_max_speed : 0.0);
 }
 
 /// Backs the tracked target off by `standoff` (m) along its approach axis

@@ -47,6 +47,7 @@ void ControllerAdapter::setTaskGains(int task, const fsm::TaskGains& gains) {
   if (gains.active) {
     g.translation = control::PdGains::critical(gains.translation);
     g.orientation = control::PdGains::critical(gains.orientation);
+    g.max_speed = gains.max_speed;
   }
   controller_.setTaskGains(task, g);
 }

@@ -245,6 +245,49 @@ TEST(TrajectoryTrackingTask, SpeedLimitClipsTheErrorThePdActsOn) {
   EXPECT_LT((rh.b - rp.b).norm(), 1e-12);
 }
 
+// A phase's gains may bring their own speed limit (the slide onto an object
+// in the person's hand): it lowers the configured limit, never raises it,
+// and the configured gains bring the configured limit back.
+TEST(TrajectoryTrackingTask, APhasesSpeedLimitLowersTheConfiguredOneUntilTheConfiguredGainsReturn) {
+  std::mt19937 rng(11);
+  Data data(panda());
+  const Motion m = randomMotion(rng);
+  const GraspOffset g = someOffset(false);
+  const PdGains kt{50.0, 2.0 * std::sqrt(50.0)}, ko{100.0, 20.0};
+  TrajectoryTrackingTask task(panda(), "t", "tcp", kt, ko);
+  TrajectoryTrackingTask reference(panda(), "r", "tcp", kt, ko);
+  task.setGraspOffset(g);
+  reference.setGraspOffset(g);
+  Truth truth{m, g, m.X0.linear() * g.placement.linear(), panda().frameId("tcp")};
+  const Vector3 e = truth.positionError(0.0);
+  ASSERT_GT(e.norm(), 0.05);
+  const double asked = kt.stiffness * e.norm() / kt.damping;  // m/s, what the unclipped PD asks
+  task.setSpeedLimits(0.5 * asked, 0.0);
+
+  TaskGains phase;
+  phase.configured = false;
+  phase.translation = kt;
+  phase.orientation = ko;
+  phase.max_speed = 0.25 * asked;
+  ASSERT_TRUE(task.applyGains(phase));
+  EXPECT_DOUBLE_EQ(task.maxSpeed(), 0.25 * asked);
+  reference.setSpeedLimits(0.25 * asked, 0.0);
+  EXPECT_LT((computeRows(task, m, data).b - computeRows(reference, m, data).b).norm(), 1e-12);
+
+  phase.max_speed = 4.0 * asked;  // above the configured limit: the configured one holds
+  task.applyGains(phase);
+  EXPECT_DOUBLE_EQ(task.maxSpeed(), 0.5 * asked);
+  phase.max_speed = 0.0;          // none of its own: the configured one
+  task.applyGains(phase);
+  EXPECT_DOUBLE_EQ(task.maxSpeed(), 0.5 * asked);
+  phase.max_speed = 0.25 * asked;
+  task.applyGains(phase);
+  task.applyGains(TaskGains{});   // the configured gains again
+  EXPECT_DOUBLE_EQ(task.maxSpeed(), 0.5 * asked);
+  reference.setSpeedLimits(0.5 * asked, 0.0);
+  EXPECT_LT((computeRows(task, m, data).b - computeRows(reference, m, data).b).norm(), 1e-12);
+}
+
 TEST(TrajectoryTrackingTask, FreeAxisRowsAreExactAndLeaveSpinFree) {
   std::mt19937 rng(9);
   Data data(panda());

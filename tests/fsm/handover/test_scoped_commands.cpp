@@ -26,6 +26,7 @@ ScopedCommands allChanged() {
   v.gains.active = true;
   v.gains.translation = 6.0;
   v.gains.orientation = 12.0;
+  v.gains.max_speed = 0.25;
   v.hand_clearance_relaxed = true;
   v.task_switches.mask = 1u << 3;  // a task beyond tracking, pose and posture, switched on
   v.task_switches.on = 1u << 3;
@@ -47,7 +48,7 @@ void changeThroughHandle(ControllerHandle& h, Channel c) {
     case Channel::kPose: h.setPoseTarget(v.pose.pose); break;
     case Channel::kPosture: h.setPostureTarget(v.posture.q); break;
     case Channel::kSpeedScale: h.setSpeedScale(v.speed_scale); break;
-    case Channel::kGains: h.setTrackingStiffness(v.gains.translation, v.gains.orientation); break;
+    case Channel::kGains: h.setTrackingStiffness(v.gains.translation, v.gains.orientation, v.gains.max_speed); break;
     case Channel::kHandClearance: h.relaxHandClearance(v.hand_clearance_relaxed); break;
     case Channel::kTaskSwitches: h.setTaskEnabled(3, true); break;
     case Channel::kAnticipation: h.anticipateRest(v.anticipate_rest); break;
