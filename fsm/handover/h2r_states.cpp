@@ -310,6 +310,10 @@ bool Grasp::onRun(HandoverContext& ctx) {
       return false;
     ctx.force_before_grasp = ctx.force;  // reference for the release test
     ctrl().setGripper(ctx.params->gripper_close_width, ctx.params->gripForce(ctx.object.mass, ctx.comInTcp()));
+    // the fingers centre the gripper on the object now: an arm that gives way to them
+    const HandoverParams& p = *ctx.params;
+    if (p.closing_tracking_translation_stiffness > 0.0 && p.closing_tracking_orientation_stiffness > 0.0)
+      ctrl().setTrackingStiffness(p.closing_tracking_translation_stiffness, p.closing_tracking_orientation_stiffness);
     closing_ = true;
     pull_.restart();
     closed_at_ = last_time_ = ctx.time;

@@ -70,6 +70,11 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
       p.align_tracking_translation_stiffness = inRange(*align, "translation_stiffness", 0.0, 1000.0);
       p.align_tracking_orientation_stiffness = inRange(*align, "orientation_stiffness", 0.0, 1000.0);
       if (align->has("max_speed")) p.align_tracking_max_speed = inRange(*align, "max_speed", 0.01, 5.0);
+      if (auto closing = align->optionalChild("closing")) {
+        p.closing_tracking_translation_stiffness = inRange(*closing, "translation_stiffness", 0.0, 1000.0);
+        p.closing_tracking_orientation_stiffness = inRange(*closing, "orientation_stiffness", 0.0, 1000.0);
+        closing->finish();
+      }
       align->finish();
     }
     if (auto a = t->optionalChild("anticipate_reach")) p.anticipate_reach = a->asBool();

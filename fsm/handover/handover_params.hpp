@@ -39,6 +39,12 @@ struct HandoverParams {
   /// tracking task's own limit): stiff gains converge sooner, and a
   /// fingertip that lands on a misjudged object lands no faster than this.
   double align_tracking_max_speed = 0.0;
+  /// The same once the fingers close (Grasp, after the close command): the
+  /// object the person holds centres the closing fingers, so the arm must
+  /// give way to them; held stiffly against them the wrist was spun past its
+  /// speed limit. 0 = the align gains.
+  double closing_tracking_translation_stiffness = 0.0;
+  double closing_tracking_orientation_stiffness = 0.0;
   /// The follow gains once the tracked body has arrived: at rest the
   /// tracking stiffens to these, and eases back to the follow gains as the
   /// body's speed rises to arrive_speed (linear between). The soft follow

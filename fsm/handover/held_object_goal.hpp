@@ -14,7 +14,7 @@
 // switches to the placement in that step (one cycle on the named pose).
 // With params.carry.joint_speed > 0 the move in joint space is timed
 // (timed_move.hpp): a cruise profile fed forward to the posture task
-// (off as shipped: config/fsm.yaml says why).
+// (on as shipped: config/fsm.yaml carry).
 // RT safe: no search, no allocation.
 #pragma once
 
