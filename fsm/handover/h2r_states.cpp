@@ -372,8 +372,11 @@ void WaitForRelease::onStart(HandoverContext& ctx) {
 void WaitForRelease::hold(HandoverContext& ctx) {
   ctrl().enableTracking(false);
   ctrl().setPoseTarget(ctx.in.tcp_pose);
-  ctrl().setPoseStiffness(ctx.params->align_tracking_translation_stiffness,
-                          ctx.params->align_tracking_orientation_stiffness);
+  // stiff as the closed fingers were held (the closing gains; without them the align gains)
+  const HandoverParams& p = *ctx.params;
+  const bool closing = p.closing_tracking_translation_stiffness > 0.0 && p.closing_tracking_orientation_stiffness > 0.0;
+  ctrl().setPoseStiffness(closing ? p.closing_tracking_translation_stiffness : p.align_tracking_translation_stiffness,
+                          closing ? p.closing_tracking_orientation_stiffness : p.align_tracking_orientation_stiffness);
   holding_ = true;
 }
 

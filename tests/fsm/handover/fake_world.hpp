@@ -38,6 +38,7 @@ struct RecordingController : ControllerInterface {
   double speed = 1.0;
   bool gains_active = false;     // values only (not in `calls`)
   double gains_translation = 0.0, gains_orientation = 0.0;  // 1/s^2, when gains_active
+  double gains_max_speed = 0.0;  // m/s, the phase's own speed limit (0: the task's)
   bool pose_gains_active = false;  // the pose task's, values only
   double pose_gains_translation = 0.0;
   bool hand_relaxed = false;     // values only (not in `calls`)
@@ -106,6 +107,7 @@ struct RecordingController : ControllerInterface {
     gains_active = g.active;
     gains_translation = g.translation;
     gains_orientation = g.orientation;
+    gains_max_speed = g.max_speed;
   }
   void setTaskOffset(int task, const TrackingOffset& o) override {
     if (task != 0) return;

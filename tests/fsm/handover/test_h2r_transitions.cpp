@@ -60,6 +60,37 @@ TEST(HandoverH2R, SuccessfulTakeVisitsEveryPhase) {
   EXPECT_TRUE(rig.ctl.pose_active);
 }
 
+// Grasp slides in at the stiff align gains, no faster than the slide's speed
+// limit (a fingertip that lands on a misjudged object lands no faster), and
+// once the fingers close the arm gives way to them at the softer closing
+// gains (held stiffly against fingers closing off centre, the wrist spun).
+TEST(HandoverH2R, GraspSlidesInStifflyAtTheSlideSpeedAndGivesWayOnceTheFingersClose) {
+  Rig rig;
+  const HandoverParams& p = rig.fsm->params();
+  ASSERT_GT(p.align_tracking_max_speed, 0.0);
+  ASSERT_GT(p.closing_tracking_translation_stiffness, 0.0);
+  ASSERT_LT(p.closing_tracking_translation_stiffness, p.align_tracking_translation_stiffness);
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
+  bool aligned_at_rest = false;
+  ASSERT_TRUE(rig.runUntil(
+      [&] {
+        if (rig.ctl.gripper_width > 0.0 && rig.ctl.gains_active &&
+            rig.ctl.gains_translation == p.align_tracking_translation_stiffness)
+          aligned_at_rest = rig.ctl.gains_orientation == p.align_tracking_orientation_stiffness &&
+                            rig.ctl.gains_max_speed == p.align_tracking_max_speed;
+        return rig.ctl.gripper_width == 0.0;
+      },
+      5.0));
+  EXPECT_TRUE(aligned_at_rest) << "the slide in did not track at the align gains and speed";
+  rig.runFor(0.002);
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Grasp")) << rig.fsm->activePath();
+  EXPECT_TRUE(rig.ctl.gains_active);
+  EXPECT_EQ(rig.ctl.gains_translation, p.closing_tracking_translation_stiffness);
+  EXPECT_EQ(rig.ctl.gains_orientation, p.closing_tracking_orientation_stiffness);
+  EXPECT_EQ(rig.ctl.gains_max_speed, 0.0);
+}
+
 // The close is judged where the TCP will be when the fingers meet the object
 // (params.gripper.closing_speed), not once it has come to rest: it comes while
 // the TCP still slides in, and the fingers close on the object.
@@ -241,8 +272,10 @@ TEST(HandoverH2R, ApproachStiffensAsTheObjectArrives) {
   if (Rig::endsWith(rig.fsm->activePath(), "Approach")) {
     EXPECT_NEAR(rig.ctl.gains_translation, p.arrive_tracking_translation_stiffness, 0.5);
     EXPECT_NEAR(rig.ctl.gains_orientation, p.arrive_tracking_orientation_stiffness, 1.0);
-  } else {  // lining up (Grasp): the align gains at rest
+  } else if (rig.ctl.gripper_width > 0.0) {  // lining up (Grasp): the align gains at rest
     EXPECT_NEAR(rig.ctl.gains_translation, p.align_tracking_translation_stiffness, 0.5);
+  } else {  // the fingers close: the closing gains
+    EXPECT_EQ(rig.ctl.gains_translation, p.closing_tracking_translation_stiffness);
   }
 }
 
@@ -586,7 +619,7 @@ TEST(HandoverH2R, TheLiftOffIsATimedMoveTheGripHolds) {
 }
 
 // While the robot holds the object and waits for the person to let go, the
-// pose task holds the grasp pose as stiffly as the grasp aligned it: at the
+// pose task holds the grasp pose as stiffly as the closing fingers were held: at the
 // configured K = 6 (times the arm's task-space inertia: some tens of N/m)
 // half a newton the model missed as the weight came over sank the object by
 // 2-3 cm.
@@ -599,7 +632,7 @@ TEST(HandoverH2R, TheGraspPoseIsHeldStifflyUntilThePersonLetsGo) {
       [&] {
         if (rig.fsm->activePath() == "Handover/HumanToRobot/WaitForRelease" && rig.ctl.pose_active &&
             rig.ctl.pose_gains_active)
-          stiff_while_holding = rig.ctl.pose_gains_translation == rig.fsm->params().align_tracking_translation_stiffness;
+          stiff_while_holding = rig.ctl.pose_gains_translation == rig.fsm->params().closing_tracking_translation_stiffness;
         return rig.fsm->activePath() == "Handover/HumanToRobot/Retract";
       },
       15.0));
@@ -615,7 +648,8 @@ TEST(HandoverH2R, TheTcpIsHeldOnceTheRobotBearsMostOfTheWeight) {
   Rig rig;
   rig.world.moveHand(kMeet, 0.5);
   ASSERT_TRUE(rig.runUntilState("WaitForRelease", 12.0)) << rig.fsm->activePath();
-  const double stiff = rig.fsm->params().align_tracking_translation_stiffness;
+  const double stiff = rig.fsm->params().closing_tracking_translation_stiffness;
+  ASSERT_GT(stiff, rig.fsm->params().tracking_translation_stiffness);
   rig.world.share = 0.2;  // the person carries most of it: followed
   rig.runFor(0.2);
   EXPECT_TRUE(rig.ctl.tracking);
