@@ -321,8 +321,11 @@ bool Grasp::onRun(HandoverContext& ctx) {
     finger_speed_ = 1e9;
     return false;
   }
-  // the person takes it back as the fingers close (WaitForRelease's rule): let them
-  if (pull_.pulled(ctx, touch_time_)) {
+  // the person takes it back as the fingers close (WaitForRelease's rule): let them. And
+  // one who withdraws while the fingers still close freely, before they hold anything,
+  // withdraws as before the close: closed on an object pulled away at 0.8 m/s, the fingers
+  // caught it and the pull spun the wrist past its velocity limit before it slipped out
+  if (pull_.pulled(ctx, touch_time_) || (finger_speed_ > stall_speed_ && withdrawn(ctx, false))) {
     setOutput(withdrawn_);
     return true;
   }

@@ -91,6 +91,24 @@ TEST(HandoverH2R, GraspSlidesInStifflyAtTheSlideSpeedAndGivesWayOnceTheFingersCl
   EXPECT_EQ(rig.ctl.gains_max_speed, 0.0);
 }
 
+// A person who withdraws with the object while the fingers still close on it,
+// before they hold anything, is let go as one who withdraws before the close
+// (open, retreat): the fingers caught a box pulled away at 0.8 m/s and the
+// pull spun the wrist past its velocity limit (seed 463).
+TEST(HandoverH2R, APersonWhoWithdrawsWhileTheFingersCloseIsLetGo) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
+  ASSERT_TRUE(rig.runUntil([&] { return rig.ctl.gripper_width == 0.0; }, 5.0));
+  ASSERT_GT(rig.world.width, rig.world.object_width + 0.01) << "the fingers already hold it";
+  rig.world.moveHand(kAway, 0.8);
+  ASSERT_TRUE(rig.runUntil([&] { return !Rig::endsWith(rig.fsm->activePath(), "Grasp"); }, 2.0));
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "RetreatOpen")) << rig.fsm->activePath();
+  EXPECT_EQ(rig.ctl.gripper_width, rig.fsm->params().gripper_open_width);
+  // let go while the fingers were still wider than the object: not after closing on nothing
+  EXPECT_GT(rig.world.width, rig.world.object_width);
+}
+
 // The close is judged where the TCP will be when the fingers meet the object
 // (params.gripper.closing_speed), not once it has come to rest: it comes while
 // the TCP still slides in, and the fingers close on the object.
