@@ -209,12 +209,21 @@ TEST(TrajectoryTrackingTask, GainsGiveThePdLaw) {
 // The speed limit clips the error the PD acts on to D v_max / K (so a PD at
 // rest asks at most v_max), leaves a smaller error alone and the rows' A and
 // the reported error untouched.
+/// The speed-limit tests' state: a random motion, an offset, the PD gains.
+struct SpeedLimitCase {
+  std::mt19937 rng{11};
+  Data data{panda()};
+  Motion m = randomMotion(rng);
+  GraspOffset g = someOffset(false);
+  PdGains kt{50.0, 2.0 * std::sqrt(50.0)}, ko{100.0, 20.0};
+};
+
 TEST(TrajectoryTrackingTask, SpeedLimitClipsTheErrorThePdActsOn) {
-  std::mt19937 rng(11);
-  Data data(panda());
-  const Motion m = randomMotion(rng);
-  const GraspOffset g = someOffset(false);
-  const PdGains kt{50.0, 2.0 * std::sqrt(50.0)}, ko{100.0, 20.0};
+  SpeedLimitCase c;
+  Data& data = c.data;
+  const Motion& m = c.m;
+  const GraspOffset& g = c.g;
+  const PdGains &kt = c.kt, &ko = c.ko;
   TrajectoryTrackingTask free_task(panda(), "t0", "tcp", PdGains{0.0, 0.0}, PdGains{0.0, 0.0});
   TrajectoryTrackingTask plain(panda(), "t1", "tcp", kt, ko);
   TrajectoryTrackingTask limited(panda(), "t2", "tcp", kt, ko);
@@ -249,30 +258,26 @@ TEST(TrajectoryTrackingTask, SpeedLimitClipsTheErrorThePdActsOn) {
 // in the person's hand): it lowers the configured limit, never raises it,
 // and the configured gains bring the configured limit back.
 TEST(TrajectoryTrackingTask, APhasesSpeedLimitLowersTheConfiguredOneUntilTheConfiguredGainsReturn) {
-  std::mt19937 rng(11);
-  Data data(panda());
-  const Motion m = randomMotion(rng);
-  const GraspOffset g = someOffset(false);
-  const PdGains kt{50.0, 2.0 * std::sqrt(50.0)}, ko{100.0, 20.0};
-  TrajectoryTrackingTask task(panda(), "t", "tcp", kt, ko);
-  TrajectoryTrackingTask reference(panda(), "r", "tcp", kt, ko);
-  task.setGraspOffset(g);
-  reference.setGraspOffset(g);
-  Truth truth{m, g, m.X0.linear() * g.placement.linear(), panda().frameId("tcp")};
+  SpeedLimitCase c;
+  TrajectoryTrackingTask task(panda(), "t", "tcp", c.kt, c.ko);
+  TrajectoryTrackingTask reference(panda(), "r", "tcp", c.kt, c.ko);
+  task.setGraspOffset(c.g);
+  reference.setGraspOffset(c.g);
+  Truth truth{c.m, c.g, c.m.X0.linear() * c.g.placement.linear(), panda().frameId("tcp")};
   const Vector3 e = truth.positionError(0.0);
   ASSERT_GT(e.norm(), 0.05);
-  const double asked = kt.stiffness * e.norm() / kt.damping;  // m/s, what the unclipped PD asks
+  const double asked = c.kt.stiffness * e.norm() / c.kt.damping;  // m/s, what the unclipped PD asks
   task.setSpeedLimits(0.5 * asked, 0.0);
 
   TaskGains phase;
   phase.configured = false;
-  phase.translation = kt;
-  phase.orientation = ko;
+  phase.translation = c.kt;
+  phase.orientation = c.ko;
   phase.max_speed = 0.25 * asked;
   ASSERT_TRUE(task.applyGains(phase));
   EXPECT_DOUBLE_EQ(task.maxSpeed(), 0.25 * asked);
   reference.setSpeedLimits(0.25 * asked, 0.0);
-  EXPECT_LT((computeRows(task, m, data).b - computeRows(reference, m, data).b).norm(), 1e-12);
+  EXPECT_LT((computeRows(task, c.m, c.data).b - computeRows(reference, c.m, c.data).b).norm(), 1e-12);
 
   phase.max_speed = 4.0 * asked;  // above the configured limit: the configured one holds
   task.applyGains(phase);
@@ -285,7 +290,7 @@ TEST(TrajectoryTrackingTask, APhasesSpeedLimitLowersTheConfiguredOneUntilTheConf
   task.applyGains(TaskGains{});   // the configured gains again
   EXPECT_DOUBLE_EQ(task.maxSpeed(), 0.5 * asked);
   reference.setSpeedLimits(0.5 * asked, 0.0);
-  EXPECT_LT((computeRows(task, m, data).b - computeRows(reference, m, data).b).norm(), 1e-12);
+  EXPECT_LT((computeRows(task, c.m, c.data).b - computeRows(reference, c.m, c.data).b).norm(), 1e-12);
 }
 
 TEST(TrajectoryTrackingTask, FreeAxisRowsAreExactAndLeaveSpinFree) {
