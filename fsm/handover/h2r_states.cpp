@@ -375,11 +375,9 @@ void WaitForRelease::onStart(HandoverContext& ctx) {
 void WaitForRelease::hold(HandoverContext& ctx) {
   ctrl().enableTracking(false);
   ctrl().setPoseTarget(ctx.in.tcp_pose);
-  // stiff as the closed fingers were held (the closing gains; without them the align gains)
-  const HandoverParams& p = *ctx.params;
-  const bool closing = p.closing_tracking_translation_stiffness > 0.0 && p.closing_tracking_orientation_stiffness > 0.0;
-  ctrl().setPoseStiffness(closing ? p.closing_tracking_translation_stiffness : p.align_tracking_translation_stiffness,
-                          closing ? p.closing_tracking_orientation_stiffness : p.align_tracking_orientation_stiffness);
+  // as stiff as the closing fingers were held
+  ctrl().setPoseStiffness(ctx.params->closing_tracking_translation_stiffness,
+                          ctx.params->closing_tracking_orientation_stiffness);
   holding_ = true;
 }
 

@@ -74,6 +74,9 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
         p.closing_tracking_translation_stiffness = inRange(*closing, "translation_stiffness", 0.0, 1000.0);
         p.closing_tracking_orientation_stiffness = inRange(*closing, "orientation_stiffness", 0.0, 1000.0);
         closing->finish();
+      } else {  // the fingers close at the align gains
+        p.closing_tracking_translation_stiffness = p.align_tracking_translation_stiffness;
+        p.closing_tracking_orientation_stiffness = p.align_tracking_orientation_stiffness;
       }
       align->finish();
     }

@@ -42,7 +42,7 @@ struct HandoverParams {
   /// The same once the fingers close (Grasp, after the close command): the
   /// object the person holds centres the closing fingers, so the arm must
   /// give way to them; held stiffly against them the wrist was spun past its
-  /// speed limit. 0 = the align gains.
+  /// speed limit. Not configured: the align gains; 0: the gains as they are.
   double closing_tracking_translation_stiffness = 0.0;
   double closing_tracking_orientation_stiffness = 0.0;
   /// The follow gains once the tracked body has arrived: at rest the
