@@ -108,6 +108,12 @@ GraspSelectionConfig graspSelectionConfigFrom(const YamlReader& root) {
     r->finish();
   }
   c.hysteresis = nonNegative(root, "hysteresis", c.hysteresis, 1e3);
+  if (auto r = root.optionalChild("keep_tolerance")) {
+    c.keep_tolerance.position = nonNegative(*r, "position", c.keep_tolerance.position, 0.05);
+    c.keep_tolerance.orientation =
+        nonNegative(*r, "orientation_deg", c.keep_tolerance.orientation / kDeg, 10.0) * kDeg;
+    r->finish();
+  }
   c.declared_preference = nonNegative(root, "declared_preference", c.declared_preference, 1e3);
   if (auto r = root.optionalChild("cold_solves_per_update")) {
     c.cold_solves_per_update = static_cast<int>(r->checkRange(r->asInt(), 0, 100000));

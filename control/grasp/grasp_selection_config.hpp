@@ -35,6 +35,16 @@ struct GraspSelectionConfig {
   double table_height = 0.0;
   double table_clearance = 0.02;
   double hysteresis = 0.15;           ///< score units another candidate must gain to replace the current choice
+  /// The current choice stays reachable while its IK (grasp and pre-grasp)
+  /// ends within this of the target; any other candidate must converge to
+  /// the IK's own tolerance (ik). A target at the edge of the workspace (the
+  /// arm nearly stretched) crosses the IK's tolerance back and forth with the
+  /// sensor's noise: a top grasp's pre-grasp 0.4-2 mm out of reach flipped
+  /// the choice to a grasp a quarter turn away and back, every few updates.
+  struct {
+    double position = 0.005;                   ///< m
+    double orientation = 0.5 * M_PI / 180.0;   ///< rad
+  } keep_tolerance;
   /// Score units added to the grasps the object declares over the families
   /// its shape allows (GraspSpec::preference; applied by whoever builds the specs).
   double declared_preference = 0.5;

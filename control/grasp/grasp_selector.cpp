@@ -38,16 +38,20 @@ void GraspSelector::reset() {
 
 bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, const Vector7& seed,
                               const Vector7& q_now, const ObstacleCapsule* obstacles, int num_obstacles,
-                              CandidateEvaluation& out) {
+                              CandidateEvaluation& out, bool keep) {
+  const auto reached = [&](const IkResult& r) {
+    return r.converged || (keep && r.position_error < config_.keep_tolerance.position &&
+                           r.orientation_error < config_.keep_tolerance.orientation);
+  };
   const IkResult g = solveIk(model_, frame_, grasp, seed, config_.ik);
   out.iterations += g.iterations;
-  if (!g.converged) return false;
+  if (!reached(g)) return false;
   // no standoff (a give's presentation): the pre-grasp is the grasp, solved and scored once
   const bool has_pre = pre_grasp.matrix() != grasp.matrix();
   // the pre-grasp lies a few cm back: its solution is next to the grasp's
   const IkResult p = has_pre ? solveIk(model_, frame_, pre_grasp, g.q, config_.ik) : g;
   if (has_pre) out.iterations += p.iterations;
-  if (!p.converged) return false;
+  if (!reached(p)) return false;
 
   ChainPoses poses;
   const double floor = config_.table_height + config_.table_clearance;
@@ -92,7 +96,8 @@ void GraspSelector::evaluate(int k, const Isometry& X_obj, const Vector7& q_now,
     int& next = next_seed_[k];
     const Vector7 seed = start == Start::kWarm ? e.q_grasp : seeds_[next];
     if (start == Start::kNextSeed) next = (next + 1) % static_cast<int>(seeds_.size());
-    e.feasible = solvePair(e.grasp, e.pre_grasp, seed, q_now, obstacles, num_obstacles, e);
+    const bool keep = choice_.valid && choice_.index == k;
+    e.feasible = solvePair(e.grasp, e.pre_grasp, seed, q_now, obstacles, num_obstacles, e, keep);
     warm_[k] = e.feasible;
     if (e.feasible) addCandidateTerms(k, e.score);
     return;

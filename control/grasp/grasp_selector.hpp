@@ -5,7 +5,11 @@
 // pose, solves IK for both, scores the grasp configuration (grasp_score.hpp;
 // the margin and clearance terms take the worse of grasp and pre-grasp) and
 // keeps the current choice unless another feasible candidate beats it by
-// `hysteresis`, or the current one became unreachable. IK starts warm from each
+// `hysteresis`, or the current one became unreachable. Reachability has its
+// hysteresis too: a candidate becomes reachable when its IK converges to the
+// IK's tolerance, and the current choice stays reachable while its IK ends
+// within `keep_tolerance` (a target at the edge of the workspace crosses the
+// IK's tolerance back and forth with the sensor's noise). IK starts warm from each
 // candidate's previous solution; a candidate without one (first update, or its
 // warm solve failed) is solved from the current q and every fixed seed on the
 // first update, keeping the best-scoring solution; later, such candidates get
@@ -99,8 +103,9 @@ class GraspSelector {
   void tryCurrentBranch(int k, const Vector7& q_now, const ObstacleCapsule* obstacles, int num_obstacles);
   /// The candidate's own terms on a feasible solution: its spec's preference, the blocked pull.
   void addCandidateTerms(int k, ScoreTerms& score) const;
+  /// keep: the candidate is the current choice (IK within config.keep_tolerance counts as reached).
   bool solvePair(const Isometry& grasp, const Isometry& pre_grasp, const Vector7& seed, const Vector7& q_now,
-                 const ObstacleCapsule* obstacles, int num_obstacles, CandidateEvaluation& out);
+                 const ObstacleCapsule* obstacles, int num_obstacles, CandidateEvaluation& out, bool keep = false);
 
   const Model& model_;
   GraspSelectionConfig config_;

@@ -377,6 +377,57 @@ TEST(GraspSelector, AGraspThatPutsAFingerOnThePersonsForearmIsNotTaken) {
   EXPECT_GT(feasible, 0);
 }
 
+// Reachability with hysteresis: an object carried outward to the edge of the
+// workspace. A fresh selection refuses the grasp once its IK no longer
+// converges (the arm stretched); the choice made before stays while its IK
+// ends within keep_tolerance (the sensor's noise moved such a target in and
+// out of reach and the choice flipped to a grasp a quarter turn away and
+// back), and is given up beyond that.
+TEST(GraspSelector, TheChosenGraspStaysReachableAcrossTheEdgeOfTheWorkspaceWithinTheKeepTolerance) {
+  const Model& model = testing::panda();
+  GraspSpec top;  // from above, fingers along y
+  top.placement.linear() = Eigen::AngleAxisd(M_PI, Vector3::UnitX()).toRotationMatrix();
+  const GraspSelectionConfig config = testing::shippedConfig();
+  ASSERT_GT(config.keep_tolerance.position, 10.0 * config.ik.position_tolerance);
+  const Vector7 q_now = testing::readyConfiguration();
+  const auto freshlyReachable = [&](double x) {
+    GraspSelector fresh(model, {top}, config);
+    return fresh.update(bottleAt(Vector3(x, 0.0, 0.3)), q_now).valid;
+  };
+  // the edge along x, to 0.1 mm
+  double in = 0.55, out = 1.2;
+  ASSERT_TRUE(freshlyReachable(in));
+  ASSERT_FALSE(freshlyReachable(out));
+  while (out - in > 1e-4) {
+    const double mid = 0.5 * (in + out);
+    (freshlyReachable(mid) ? in : out) = mid;
+  }
+  const double beyond = out + 0.001;  // 1 mm past the edge
+  ASSERT_FALSE(freshlyReachable(beyond));
+
+  // the object carried there in 1 cm steps, then 1 mm at a time
+  GraspSelector selector(model, {top}, config);
+  Vector7 q = q_now;
+  double x = in - 0.1;
+  for (; x < in - 0.005; x += 0.01) {
+    const GraspChoice& c = selector.update(bottleAt(Vector3(x, 0.0, 0.3)), q);
+    ASSERT_TRUE(c.valid) << "x = " << x;
+    q = c.q_grasp;  // the arm follows its choice
+  }
+  const int chosen = selector.choice().index;
+  for (; x <= beyond; x += 0.001) {
+    const GraspChoice& c = selector.update(bottleAt(Vector3(x, 0.0, 0.3)), q);
+    ASSERT_TRUE(c.valid) << "x = " << x << " (the edge at " << out << ")";
+    EXPECT_EQ(c.index, chosen);
+    EXPECT_FALSE(c.switched);
+  }
+  // what it keeps still reaches the object to within the keep tolerance
+  const Isometry X_g = tcpPose(model, selector.choice().q_grasp);
+  EXPECT_LT((X_g.translation() - selector.choice().grasp.translation()).norm(), config.keep_tolerance.position);
+  // far beyond the tolerance it is given up
+  EXPECT_FALSE(selector.update(bottleAt(Vector3(out + 0.03, 0.0, 0.3)), q).valid);
+}
+
 TEST(GraspSelector, ReportsNoChoiceForAnObjectOutOfReach) {
   const Model& model = testing::panda();
   GraspSelector selector(model, {bottleSideGrasp()}, testing::shippedConfig());
