@@ -364,7 +364,7 @@ void WaitForRelease::onStart(HandoverContext& ctx) {
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   since_ = -1.0;
   holding_ = false;
-  hand_start_ = -1.0;
+  hand_started_ = false;
   carry_since_ = -1.0;
   pull_.restart();
   // follow the object while the person still holds it, where the fingers closed on it
@@ -383,8 +383,12 @@ void WaitForRelease::hold(HandoverContext& ctx) {
 
 bool WaitForRelease::onRun(HandoverContext& ctx) {
   const bool hand_seen = fresh(ctx.in.hand, ctx.params->max_data_age);
-  const double hand_tcp = positionError(ctx.in.hand.pose, ctx.in.tcp_pose);
-  if (hand_seen && hand_start_ < 0.0) hand_start_ = hand_tcp;
+  // the hand where it grips the object, as the gripper that holds the object sees it
+  const Vector3 hand_at = ctx.in.tcp_pose.inverse(Eigen::Isometry) * ctx.in.hand.pose.translation();
+  if (hand_seen && !hand_started_) {
+    hand_start_ = hand_at;
+    hand_started_ = true;
+  }
   const double weight = ctx.object.mass * ctx.params->gravity;
   const bool carries = share_ >= 0.0 ? ctx.in.load_share >= share_
                                      : ctx.addedWeight(ctx.force_before_grasp) >= fraction_ * weight;
@@ -420,7 +424,7 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   if (since_ < 0.0) since_ = ctx.time;
   if (carry_since_ < 0.0) carry_since_ = ctx.time;
   // the person's hand is still on it; after release_wait with the whole load, let it be
-  if (share_ >= 0.0 && hand_seen && hand_tcp - hand_start_ < distance_ && ctx.time - carry_since_ < wait_) {
+  if (share_ >= 0.0 && hand_seen && (hand_at - hand_start_).norm() < distance_ && ctx.time - carry_since_ < wait_) {
     since_ = -1.0;
     return false;
   }

@@ -167,9 +167,9 @@ class Grasp : public HandoverState {
 
 /// [Released, Withdrawn] Follows, then holds, the grasp pose until the person lets go, for
 /// hold_time: the robot's load share (HandoverInput::load_share) reaches
-/// release_share and the person's hand has moved release_distance farther
-/// from the TCP than when the state started (a stale hand: the share alone;
-/// a hand that stays: the share alone once it held for release_wait),
+/// release_share and the person's hand has moved release_distance from where
+/// it held the object, measured in the TCP's frame (a stale hand: the share
+/// alone; a hand that stays: the share alone once it held for release_wait),
 /// or, without release_share, the filtered world force has gained at least
 /// release_fraction * m g along gravity since the grasp. Then sets the
 /// payload (the robot holds the object). Withdrawn: the person takes the
@@ -178,7 +178,12 @@ class Grasp : public HandoverState {
 /// Why both: while the person's grip is rigid the load on the wrist is
 /// whatever the robot pushes (the load share follows the robot's own
 /// payload), so the load alone cannot tell that the person let go; the hand
-/// leaving can.
+/// leaving can. Leaving in any direction: a hand that still grips the object
+/// the gripper holds cannot move against it. Counted as a distance from the
+/// TCP that grows, a hand whose way home passed beside and over the gripper
+/// (a person standing to its side, resting higher than they offered) came
+/// nearer it while it left, and the robot opened its fingers on the object it
+/// carried when the state timed out (g479_00803).
 /// While the person holds the object the TCP follows it (its estimate moves
 /// with their hand: no force builds against a hand that still moves; held
 /// still from the start, a hand rising 2 cm as the fingers closed was pushed
@@ -221,7 +226,8 @@ class WaitForRelease : public HandoverState {
   double distance_ = 0.0;   ///< release_distance, m
   double wait_ = 3.5;       ///< release_wait, s
   double carry_since_ = -1.0;  ///< s, since when the robot carries the load
-  double hand_start_ = -1.0;  ///< m, hand to TCP when first seen in this state; < 0: not yet
+  bool hand_started_ = false;  ///< hand_start_ is set
+  Vector3 hand_start_ = Vector3::Zero();  ///< m, the hand in the TCP's frame when first seen in this state
   double since_ = -1.0;
 };
 

@@ -688,6 +688,35 @@ TEST(HandoverH2R, TheTcpIsHeldOnceTheRobotBearsMostOfTheWeight) {
   EXPECT_FALSE(rig.ctl.pose_gains_active);
 }
 
+// The person lets go and their hand leaves past the gripper (their way home
+// runs beside and over it: the hand's distance to the TCP hardly grows). A hand that still gripped the object the
+// gripper holds could not move against it, whatever the direction: the
+// release is seen as soon as the hand has moved release_distance in the
+// TCP's frame. Counted as a distance that grows, the robot waited for
+// release_wait (3.5 s; with a late release the state's timeout came first
+// and opened the fingers on the object it carried, g479_00803).
+TEST(HandoverH2R, AHandThatLeavesPastTheGripperIsSeenToLetGo) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  auto let_go = std::make_shared<double>(-1.0);
+  auto gripped_since = std::make_shared<double>(-1.0);
+  rig.person = [let_go, gripped_since](World& w) {
+    if (!w.robot_grip || *let_go >= 0.0) return;
+    if (*gripped_since < 0.0) *gripped_since = w.time;
+    if (w.time - *gripped_since < 0.1) return;
+    *let_go = w.time;
+    w.person_holds = false;
+    // up beside the gripper: 6 cm aside and 5 cm up from 5 cm under the TCP, never 1.5 cm
+    // farther from it than where it held the object
+    w.moveHand(w.hand + Vector3(0.0, 0.06, 0.05), 0.3);
+  };
+  ASSERT_TRUE(rig.runUntilState("Retract", 6.0)) << rig.fsm->activePath();
+  ASSERT_GE(*let_go, 0.0);
+  // 1.5 cm at 0.3 m/s, the load share's hold and the estimate's age: well under a second
+  EXPECT_LT(rig.world.time - *let_go, 0.5);
+  EXPECT_EQ(rig.ctl.count("payload 0.30"), 1);
+}
+
 TEST(HandoverH2R, EmptyGraspIsMissedAndRetried) {
   Rig rig;
   rig.world.graspable = false;  // the fingers close on nothing
