@@ -46,6 +46,7 @@ ik: {max_iterations: 12, position_tolerance: 2.0e-4, orientation_tolerance_deg: 
 candidates: {free_axis_step_deg: 45, parallel_gripper_twin: false, pre_grasp_standoff: 0.05}
 score: {joint_margin: 3.0, margin_ref: 0.4, motion: 0.0}
 hysteresis: 0.3
+keep_tolerance: {position: 0.002, orientation_deg: 0.2}
 table: {height: 0.1, clearance: 0.05}
 cold_solves_per_update: 5
 branch_solves_per_update: 0
@@ -66,6 +67,8 @@ presentation_tilt_deg: 20
   EXPECT_DOUBLE_EQ(c.score.margin_ref, 0.4);
   EXPECT_DOUBLE_EQ(c.score.motion, 0.0);
   EXPECT_DOUBLE_EQ(c.hysteresis, 0.3);
+  EXPECT_DOUBLE_EQ(c.keep_tolerance.position, 0.002);
+  EXPECT_NEAR(c.keep_tolerance.orientation, 0.2 * M_PI / 180.0, 1e-15);
   EXPECT_DOUBLE_EQ(c.table_height, 0.1);
   EXPECT_DOUBLE_EQ(c.table_clearance, 0.05);
   EXPECT_EQ(c.cold_solves_per_update, 5);
@@ -84,6 +87,8 @@ TEST(GraspSelectionConfig, RejectsBadInputNamingFileAndKey) {
   EXPECT_NE(errorOf("candidates: {free_axis_step_deg: 0}\n").find("free_axis_step_deg"), std::string::npos);
   EXPECT_NE(errorOf("ik: {seeds: [[0, 0, 0]]}\n").find("ik.seeds"), std::string::npos);
   EXPECT_NE(errorOf("hysteresis: lots\n").find("hysteresis"), std::string::npos);
+  EXPECT_NE(errorOf("keep_tolerance: {position: 0.5}\n").find("keep_tolerance.position"), std::string::npos);
+  EXPECT_NE(errorOf("keep_tolerance: {distance: 0.005}\n").find("distance"), std::string::npos);
   EXPECT_NE(errorOf("upright: {position_offsets: []}\n").find("position_offsets"), std::string::npos);
   EXPECT_NE(errorOf("branch_solves_per_update: -1\n").find("branch_solves_per_update"), std::string::npos);
   EXPECT_NE(errorOf("presentation_tilt_deg: 90\n").find("presentation_tilt_deg"), std::string::npos);
