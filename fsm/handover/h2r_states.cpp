@@ -358,10 +358,6 @@ void WaitForRelease::configure(const YamlReader& def) {
     def.fail("needs release_share (the robot's load share, 0..1) or release_fraction (of m g)");
   }
   hold_time_ = readRange(def, "hold_time", 0.0, 5.0);
-  if (def.has("let_go_time")) {
-    let_go_time_ = readPositive(def, "let_go_time", 60.0);
-    not_released_ = declareOutput("NotReleased");
-  }
 }
 
 void WaitForRelease::onStart(HandoverContext& ctx) {
@@ -423,11 +419,6 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   }
   if (!carries) {
     since_ = carry_since_ = -1.0;
-    // the load never came over (or went back to the person) within let_go_time: they do not let go
-    if (not_released_ >= 0 && elapsed(ctx) >= let_go_time_) {
-      setOutput(not_released_);
-      return true;
-    }
     return false;
   }
   if (since_ < 0.0) since_ = ctx.time;

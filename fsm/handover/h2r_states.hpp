@@ -204,16 +204,9 @@ class Grasp : public HandoverState {
 /// only once the robot carries the object (payload set). Not a narrowing of
 /// the grip alone: an object that turns in the fingers as the person lets go
 /// narrows it too, and opening then dropped it (g1_00060).
-/// [NotReleased] with let_go_time (s): the robot does not carry the load
-/// (release_share) that long after the state started: the person does not let
-/// go (the fingers open, they keep it). A load that came over before then
-/// gets its release_wait: the state's timeout alone (counted from the start,
-/// where release_wait counts from the carry's start) opened the fingers on
-/// an object the robot had carried for 3.4 s next to a hand that stayed, and
-/// dropped it, where a person who let go 0.1 s sooner was released.
 /// Keys: release_share (0..1) with release_distance (m), release_wait
 /// (s) and hold_share (0.05..release_share, default release_share), or
-/// release_fraction (0..2); hold_time (s); let_go_time (s, optional).
+/// release_fraction (0..2); hold_time (s).
 class WaitForRelease : public HandoverState {
  public:
   WaitForRelease();
@@ -223,8 +216,6 @@ class WaitForRelease : public HandoverState {
 
  private:
   int released_, withdrawn_;
-  int not_released_ = -1;     ///< NotReleased, declared with let_go_time
-  double let_go_time_ = 0.0;  ///< s, let_go_time
   TakeBack pull_;
   double fraction_ = 0.7, hold_time_ = 0.1;
   double share_ = -1.0;  ///< release_share; < 0: the force rule
