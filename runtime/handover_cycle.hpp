@@ -231,6 +231,9 @@ class HandoverCycle {
   std::unique_ptr<fsm::HandoverFsm> machine_;
   std::unique_ptr<GraspPlanning> planning_;
   SensedVelocity hand_vel_, object_vel_;
+  /// The person's forearm and upper arm, differenced from their estimated poses
+  /// (the collision dampers read how fast they come at the arm).
+  SensedVelocity forearm_vel_, upper_arm_vel_;
   perception::PerceptionEstimate no_estimate_;  ///< before the first step
   const perception::PerceptionEstimate* estimate_ = &no_estimate_;
   fsm::HandoverInput input_;
