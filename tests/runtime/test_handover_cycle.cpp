@@ -148,6 +148,52 @@ TEST(HandoverCycle, TheTakingRuleIsOnOnlyWhileSharingAnObjectThePersonCarries) {
 // Trackers do not see the trunk: with a declared stand the cycle places it
 // under the tracked shoulder (the upper arm's origin), shifted to the body's
 // midline, facing the declared way, on the floor; without one it stays out.
+/// The person's whole arm sweeping sideways at 0.3 m/s (+y), sampled every cycle.
+class ArmSweeping : public perception::PoseSource {
+ public:
+  bool poll(double now, perception::PoseSample& out) override {
+    if (now <= last_) return false;
+    last_ = now;
+    out.stamp = now;
+    const Eigen::Vector3d shift(0.0, 0.3 * now, 0.0);
+    Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();
+    hand.translation() = Eigen::Vector3d(0.7, 0.0, 0.3) + shift;
+    out.hand = perception::Pose::fromIsometry(hand);
+    Eigen::Isometry3d forearm = Eigen::Isometry3d::Identity();
+    forearm.translation() = Eigen::Vector3d(0.7, 0.0, 0.3) + shift;
+    forearm.linear() = control::expRotation(control::Vector3(0.0, M_PI / 2, 0.0));  // z along world x
+    out.forearm = perception::Pose::fromIsometry(forearm);
+    Eigen::Isometry3d upper = forearm;
+    upper.translation() += Eigen::Vector3d(0.27, 0.0, 0.0);
+    out.upper_arm = perception::Pose::fromIsometry(upper);
+    return true;
+  }
+
+ private:
+  double last_ = -1.0;
+};
+
+// The collision dampers read how fast each part of the person comes at the
+// arm: the forearm and the upper arm too, not only the hand. Taken as still,
+// a forearm coming at 0.3 m/s into the open gripper beside the object read a
+// pair distance that grew (+0.2 m/s) while it fell 4 cm, and touched the
+// gripper (g491_00039).
+TEST(HandoverCycle, TheCollisionModelMovesThePersonsForearmAndUpperArmAsTheyMove) {
+  HandoverCycle cycle(defaultCycleSettings());
+  const io::Vector7 q0 = cycle.controller().config().posture.target;
+  ArmSweeping person;
+  cycle.start(armAt(q0, 0.0), false);
+  for (int k = 0; k <= 500; ++k) cycle.step(k * 0.001, armAt(q0, k * 0.001), person);
+  const auto& cm = cycle.collision().collisionModel();
+  const auto& cd = cycle.collision().collisionData();
+  for (const int body : {cm.human_forearm, cm.human_upper_arm, cm.human_hand}) {
+    const Eigen::Vector3d v = cd.body_twist[body].head<3>();
+    EXPECT_NEAR(v.y(), 0.3, 0.01) << cm.bodies[body].name;
+    EXPECT_NEAR(v.x(), 0.0, 0.01) << cm.bodies[body].name;
+    EXPECT_NEAR(v.z(), 0.0, 0.01) << cm.bodies[body].name;
+  }
+}
+
 TEST(HandoverCycle, TrunkStandsUnderTheTrackedShoulder) {
   CycleSettings s = defaultCycleSettings();
   s.stand.declared = true;
