@@ -15,31 +15,45 @@
 namespace handover::runtime {
 namespace {
 
-/// The person's hand 0.4 m in front of the TCP, the forearm straight
-/// through the robot's base (so the robot-arm distance is short), sampled
-/// every cycle.
-class HandInView : public perception::PoseSource {
+/// A person sampled every cycle: the grip point at `hand` (plus `wobble`
+/// sin(t) m along y), the forearm from `forearm` with its z along world x,
+/// the upper arm's origin `upper` beyond it (world offset); all of it moving
+/// at `sweep` (m/s).
+class PersonInView : public perception::PoseSource {
  public:
+  PersonInView(const Eigen::Vector3d& hand, double wobble, const Eigen::Vector3d& forearm,
+               const Eigen::Vector3d& upper, const Eigen::Vector3d& sweep)
+      : hand_(hand), forearm_(forearm), upper_(upper), sweep_(sweep), wobble_(wobble) {}
   bool poll(double now, perception::PoseSample& out) override {
     if (now <= last_) return false;
     last_ = now;
     out.stamp = now;
+    const Eigen::Vector3d shift = sweep_ * now;
     Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();
-    hand.translation() = Eigen::Vector3d(0.7, 0.05 * std::sin(now), 0.3);
+    hand.translation() = hand_ + shift + Eigen::Vector3d(0.0, wobble_ * std::sin(now), 0.0);
     out.hand = perception::Pose::fromIsometry(hand);
     Eigen::Isometry3d forearm = Eigen::Isometry3d::Identity();
-    forearm.translation() = Eigen::Vector3d(-0.1, 0.0, 0.3);
+    forearm.translation() = forearm_ + shift;
     forearm.linear() = control::expRotation(control::Vector3(0.0, M_PI / 2, 0.0));  // z along world x
     out.forearm = perception::Pose::fromIsometry(forearm);
     Eigen::Isometry3d upper = forearm;
-    upper.translation() += Eigen::Vector3d(0.0, 0.0, 0.3);
+    upper.translation() += upper_;
     out.upper_arm = perception::Pose::fromIsometry(upper);
     return true;
   }
 
  private:
+  Eigen::Vector3d hand_, forearm_, upper_, sweep_;
+  double wobble_;
   double last_ = -1.0;
 };
+
+/// The person's hand 0.4 m in front of the TCP, the forearm straight
+/// through the robot's base (so the robot-arm distance is short).
+PersonInView handInView() {
+  return PersonInView(Eigen::Vector3d(0.7, 0.0, 0.3), 0.05, Eigen::Vector3d(-0.1, 0.0, 0.3),
+                      Eigen::Vector3d(0.0, 0.0, 0.3), Eigen::Vector3d::Zero());
+}
 
 /// An arm that moves on its own (a slow sine on every joint), so that
 /// values of one cycle and of the previous one differ.
@@ -57,7 +71,7 @@ io::ArmState armAt(const io::Vector7& q0, double t) {
 TEST(HandoverCycle, StateMachineSeesThisCyclesSensingAndLastCyclesController) {
   HandoverCycle cycle(defaultCycleSettings());
   const io::Vector7 q0 = cycle.controller().config().posture.target;
-  HandInView person;
+  PersonInView person = handInView();
   cycle.start(armAt(q0, 0.0), false);
   for (int k = 0; k < 50; ++k) {
     const double t = k * 0.001;
@@ -148,31 +162,6 @@ TEST(HandoverCycle, TheTakingRuleIsOnOnlyWhileSharingAnObjectThePersonCarries) {
 // Trackers do not see the trunk: with a declared stand the cycle places it
 // under the tracked shoulder (the upper arm's origin), shifted to the body's
 // midline, facing the declared way, on the floor; without one it stays out.
-/// The person's whole arm sweeping sideways at 0.3 m/s (+y), sampled every cycle.
-class ArmSweeping : public perception::PoseSource {
- public:
-  bool poll(double now, perception::PoseSample& out) override {
-    if (now <= last_) return false;
-    last_ = now;
-    out.stamp = now;
-    const Eigen::Vector3d shift(0.0, 0.3 * now, 0.0);
-    Eigen::Isometry3d hand = Eigen::Isometry3d::Identity();
-    hand.translation() = Eigen::Vector3d(0.7, 0.0, 0.3) + shift;
-    out.hand = perception::Pose::fromIsometry(hand);
-    Eigen::Isometry3d forearm = Eigen::Isometry3d::Identity();
-    forearm.translation() = Eigen::Vector3d(0.7, 0.0, 0.3) + shift;
-    forearm.linear() = control::expRotation(control::Vector3(0.0, M_PI / 2, 0.0));  // z along world x
-    out.forearm = perception::Pose::fromIsometry(forearm);
-    Eigen::Isometry3d upper = forearm;
-    upper.translation() += Eigen::Vector3d(0.27, 0.0, 0.0);
-    out.upper_arm = perception::Pose::fromIsometry(upper);
-    return true;
-  }
-
- private:
-  double last_ = -1.0;
-};
-
 // The collision dampers read how fast each part of the person comes at the
 // arm: the forearm and the upper arm too, not only the hand. Taken as still,
 // a forearm coming at 0.3 m/s into the open gripper beside the object read a
@@ -181,7 +170,9 @@ class ArmSweeping : public perception::PoseSource {
 TEST(HandoverCycle, TheCollisionModelMovesThePersonsForearmAndUpperArmAsTheyMove) {
   HandoverCycle cycle(defaultCycleSettings());
   const io::Vector7 q0 = cycle.controller().config().posture.target;
-  ArmSweeping person;
+  // the whole arm sweeping sideways at 0.3 m/s (+y)
+  PersonInView person(Eigen::Vector3d(0.7, 0.0, 0.3), 0.0, Eigen::Vector3d(0.7, 0.0, 0.3),
+                      Eigen::Vector3d(0.27, 0.0, 0.0), Eigen::Vector3d(0.0, 0.3, 0.0));
   cycle.start(armAt(q0, 0.0), false);
   for (int k = 0; k <= 500; ++k) cycle.step(k * 0.001, armAt(q0, k * 0.001), person);
   const auto& cm = cycle.collision().collisionModel();
@@ -201,7 +192,7 @@ TEST(HandoverCycle, TrunkStandsUnderTheTrackedShoulder) {
   s.stand.shoulder_side = 0.2;   // a right hand: the shoulder 0.2 m right of the midline
   HandoverCycle cycle(s);
   const io::Vector7 q0 = cycle.controller().config().posture.target;
-  HandInView person;
+  PersonInView person = handInView();
   cycle.start(armAt(q0, 0.0), false);
   cycle.step(0.0, armAt(q0, 0.0), person);
   cycle.step(0.001, armAt(q0, 0.001), person);
@@ -219,7 +210,7 @@ TEST(HandoverCycle, TrunkStandsUnderTheTrackedShoulder) {
 
   // no declared stand: no trunk pair is ever active
   HandoverCycle blind(defaultCycleSettings());
-  HandInView again;
+  PersonInView again = handInView();
   blind.start(armAt(q0, 0.0), false);
   for (int k = 0; k < 5; ++k) blind.step(k * 0.001, armAt(q0, k * 0.001), again);
   const auto& bcm = blind.collision().collisionModel();
@@ -233,7 +224,7 @@ TEST(HandoverCycle, TrunkStandsUnderTheTrackedShoulder) {
 TEST(HandoverCycle, StartSetsTheGripperAndPayload) {
   HandoverCycle empty(defaultCycleSettings());
   const io::Vector7 q0 = empty.controller().config().posture.target;
-  HandInView person;
+  PersonInView person = handInView();
   empty.start(armAt(q0, 0.0), false);
   EXPECT_DOUBLE_EQ(empty.step(0.0, armAt(q0, 0.0), person).gripper_width, 0.08);
   EXPECT_FALSE(empty.adapter().payloadSet());
