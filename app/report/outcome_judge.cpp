@@ -33,13 +33,21 @@ void OutcomeJudge::observe(const StepFacts& f) {
   // the person holds may touch the table: where a person sets it down is
   // theirs to choose (a held object the robot strikes on the table counts)
   const bool nobody_holds = !f.hand_holds_object && !robot_holds;
-  const bool fell = nobody_holds && f.object_vel.z() < -s_.fall_speed;
+  const bool falling = nobody_holds && f.object_vel.z() < -s_.fall_speed;
+  if (!falling) {
+    falling_since_ = -1.0;
+  } else if (falling_since_ < 0.0) {
+    falling_since_ = f.time;
+    unseen_at_fall_ = unseen_time_;
+  }
+  const bool fell = falling && f.time - falling_since_ + 1e-9 >= s_.fall_time;
   const bool down = (f.object_on_table || f.object_on_floor) && !f.hand_holds_object;
   if (!dropped_ && (down || fell)) {
     dropped_ = true;
-    drop_time_ = f.time;
+    const bool on_something = f.object_on_table || f.object_on_floor;
+    drop_time_ = on_something || falling_since_ < 0.0 ? f.time : falling_since_;  // a fall: from its start
     drop_reason_ = f.object_on_table ? "table" : f.object_on_floor ? "floor" : "fell";
-    unseen_at_drop_ = unseen_time_;
+    unseen_at_drop_ = on_something || falling_since_ < 0.0 ? unseen_time_ : unseen_at_fall_;
   }
 
   lim_.position += f.position_violation ? 1 : 0;
@@ -138,6 +146,9 @@ RunSummary OutcomeJudge::finish(bool fsm_done, const std::string& fsm_outcome, i
   else if (robot_finished && exchange_done) r.outcome = "success";
   else if (fsm_done && fsm_outcome == "aborted") r.outcome = "aborted";
   else r.outcome = "timeout";
+  // a person who left: the run's time is until the robot, back, gave up on them
+  // (an `expect: max_total_time` then bounds how long it waited for them)
+  if (r.outcome == "aborted") r.total_time = last_time_;
   return r;
 }
 

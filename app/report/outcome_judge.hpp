@@ -52,6 +52,10 @@ struct JudgeSettings {
   double hold_time = 0.1;            ///< s both fingers on the object, away from the hand
   double away_from_hand = 0.05;      ///< m between object and grip point to count as "away"
   double fall_speed = 0.5;           ///< m/s downward with nobody holding it = falling
+  /// s the fall must last: an object slipping a few millimetres in the
+  /// fingers, its contacts flickering as it slides, is no drop (a dropped one
+  /// falls on for a few tenths of a second until it lands)
+  double fall_time = 0.02;
   double hand_rest_speed = 0.05;     ///< m/s (design notes: hand at rest)
   /// A run that did not succeed, touched nobody and broke no limit, during
   /// which the person was unseen (no usable estimate) for at least this share
@@ -84,6 +88,8 @@ class OutcomeJudge {
   bool dropped_ = false;
   double drop_time_ = 0.0;       // s, when the drop was first seen
   std::string drop_reason_;      // table | floor | fell
+  double falling_since_ = -1.0;  // s, when the current fall began (-1: not falling)
+  double unseen_at_fall_ = 0.0;  // unseen_time_ then
   int contacts_ = 0;
   int penetration_steps_ = 0;
   double step_time_ = 0.0;          // s, last step's length (for penetration_time)

@@ -160,7 +160,7 @@ bool Retreat::onRun(HandoverContext& ctx) {
                        ctx.in.tcp_velocity.head<3>().norm() <= settle_speed_;
   if (!settled && elapsed(ctx) < max_time_) return false;
   if (ctx.stats.retries < ctx.params->max_retries) {
-    ++ctx.stats.retries;
+    ctx.retry_pending = true;
     setOutput(retry_);
   } else {
     setOutput(give_up_);

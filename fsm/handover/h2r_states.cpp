@@ -63,6 +63,7 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   const HandoverParams& p = *ctx.params;
   const SensedBody& body = hand_ ? ctx.in.hand : ctx.in.object;
   if (take_.taken(ctx)) {
+    cameBack(ctx);
     setOutput(pulled_);
     return true;
   }
@@ -99,8 +100,17 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   } else {
     ready = rest_.rests(pos, ctx.time, settle_speed_, settle_time_) || ready;
   }
-  if (ready) setOutput(out_);
+  if (ready) {
+    cameBack(ctx);
+    setOutput(out_);
+  }
   return ready;
+}
+
+void WaitForPerson::cameBack(HandoverContext& ctx) {
+  if (!ctx.retry_pending) return;
+  ++ctx.stats.retries;
+  ctx.retry_pending = false;
 }
 
 Approach::Approach(bool hand)

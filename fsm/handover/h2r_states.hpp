@@ -34,6 +34,9 @@ class WaitForPerson : public HandoverState {
   bool onRun(HandoverContext& ctx) override;
 
  private:
+  /// The person came (back): after an abort, that begins a retry.
+  static void cameBack(HandoverContext& ctx);
+
   bool hand_;
   int out_, pulled_ = -1;
   ReceiverTake take_;  ///< a give: a receiver who takes the object the robot waits with

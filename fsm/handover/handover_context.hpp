@@ -38,6 +38,9 @@ struct HandoverContext : Context {
   const HandoverParams* params = nullptr;
   CommandLedger* ledger = nullptr;
   HandoverStats stats;
+  /// Retreat gave the person another attempt; counted (stats.retries) once
+  /// they come back, so a person who left for good made no retry.
+  bool retry_pending = false;
   PlannerInterface* planner = nullptr;  ///< optional (null: declared grasps and named poses only)
   /// Upright placements the states ask for; answered outside the step (HandoverFsm::plan).
   CarryChannel carry;

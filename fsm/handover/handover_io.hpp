@@ -106,7 +106,7 @@ struct HandoverStats {
   const char* outcome = "running";  ///< running | success | aborted | failed
   int handovers = 0;                ///< completed handovers
   int aborts = 0;                   ///< attempts abandoned (person withdrew, no release, no pull, ...)
-  int retries = 0;                  ///< times the robot went back to waiting after an abort
+  int retries = 0;                  ///< attempts begun after an abort (the person came back)
   int safety_stops = 0;             ///< preemptions by the safety stop
   int bad_input_cycles = 0;         ///< cycles with non-finite sensor values (ignored)
 };

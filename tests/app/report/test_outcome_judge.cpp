@@ -19,6 +19,9 @@ struct Script {
   int relaxed_steps = 0;  ///< steps solved with the collision rows relaxed
   double seen_from = 0.0, seen_until = 1e9;  ///< s, perception has a usable estimate of the person in between
   int guarded_steps = 0;  ///< steps whose command the limit guard changed
+  /// s: from then on, for `slip_for` s, the carried object slides down in the
+  /// fingers at `slip_speed` (m/s) with one finger's contact lost
+  double slip_at = 1e9, slip_for = 0.0, slip_speed = 0.0;
 };
 
 RunSummary play(const Script& sc, const std::string& fsm_outcome = "success") {
@@ -33,6 +36,10 @@ RunSummary play(const Script& sc, const std::string& fsm_outcome = "success") {
     const bool closed = f.time >= sc.t_grasp;
     f.gripper_closing = closed;
     f.left_finger_on_object = f.right_finger_on_object = closed && !sc.drop;
+    if (f.time >= sc.slip_at && f.time < sc.slip_at + sc.slip_for) {
+      f.right_finger_on_object = false;
+      f.object_vel = Eigen::Vector3d(0, 0, -sc.slip_speed);
+    }
     f.hand_holds_object = f.time < sc.t_release;
     // after release the gripper carries the object away from the hand
     const double away = f.time > sc.t_release ? (f.time - sc.t_release) * 0.3 : 0.0;
@@ -115,6 +122,33 @@ TEST(OutcomeJudge, TouchingThePersonIsHandContact) {
   EXPECT_EQ(r.human_contacts, 1);  // one touch lasting several steps counts once
 }
 
+// A plate held by its rim slid 7 mm down in the fingers as the arm turned it,
+// at up to 0.54 m/s for 4 ms, a finger's contact flickering (outsider
+// o_35): it never left the gripper, and was handed over.
+TEST(OutcomeJudge, AnObjectSlippingBrieflyInTheFingersIsNoDrop) {
+  Script slip;
+  slip.slip_at = 2.5;  // carried by the robot
+  slip.slip_for = 0.004;
+  slip.slip_speed = 0.54;
+  const RunSummary r = play(slip);
+  EXPECT_FALSE(r.object_dropped);
+  EXPECT_EQ(r.outcome, "success");
+}
+
+TEST(OutcomeJudge, AnObjectFallingOutOfTheFingersIsADropFromWhenItBeganToFall) {
+  Script fall;
+  fall.slip_at = 2.5;
+  fall.slip_for = 0.2;  // falls on, nobody holding it (one finger grazed)
+  fall.slip_speed = 1.0;
+  fall.t_end = 2.8;
+  const RunSummary r = play(fall);
+  EXPECT_TRUE(r.object_dropped);
+  EXPECT_EQ(r.outcome, "object_drop");
+  EXPECT_EQ(r.drop_reason, "fell");
+  ASSERT_TRUE(r.drop_time.has_value());
+  EXPECT_NEAR(*r.drop_time, fall.slip_at, 1.5e-3);
+}
+
 TEST(OutcomeJudge, ObjectOnTableIsDrop) {
   Script sc;
   sc.drop = true;
@@ -181,6 +215,17 @@ TEST(OutcomeJudge, NoExchangeAndFsmNotDoneIsTimeout) {
 TEST(OutcomeJudge, RobotNotFinishedIsNotSuccess) {
   const RunSummary r = play(Script{}, "aborted");
   EXPECT_EQ(r.outcome, "aborted");
+}
+
+TEST(OutcomeJudge, AnAbortedRunTakesUntilTheRobotGaveUp) {
+  // the person left: total_time is how long the run took to end in aborted
+  const RunSummary aborted = play(Script{}, "aborted");
+  ASSERT_TRUE(aborted.total_time.has_value());
+  EXPECT_GT(*aborted.total_time, 0.0);
+  Script never;
+  never.t_release = 10.0;
+  const RunSummary timeout = play(never);
+  EXPECT_FALSE(timeout.total_time.has_value());  // no handover and no end: none
 }
 
 TEST(OutcomeJudge, RobotToHumanNeedsObjectInHandAndFingersOff) {

@@ -350,7 +350,18 @@ TEST(RunEndToEnd, PersonLeavesForGoodAborts) {
   const app::RunSummary& s = run.summary;
   EXPECT_EQ(s.outcome, "aborted") << joined(s.states);
   EXPECT_EQ(s.aborts, 1);
+  EXPECT_EQ(s.retries, 0);  // they never came back
   EXPECT_EQ(s.handovers, 0);
+  // the run ends a few seconds after the person has gone (the end of their
+  // withdraw step, the script's steps being timed), and says when
+  double gone = 0.0;
+  for (const scenario::ScriptStep& step : run.scenario.human.script) {
+    gone += step.duration;
+    if (step.kind == scenario::StepKind::Withdraw) break;
+  }
+  ASSERT_TRUE(s.total_time.has_value());
+  EXPECT_GT(*s.total_time, gone);
+  EXPECT_LT(*s.total_time, gone + 5.0);
   const std::vector<std::string> seq = retreatsAlike(leaves(s.states));
   EXPECT_TRUE(endsWith(seq, {"Retreat", "WaitAgain", "Aborted"})) << joined(s.states);
   EXPECT_TRUE(inOrder(seq, {"WaitForOffer", "Approach", "Retreat"})) << joined(s.states);

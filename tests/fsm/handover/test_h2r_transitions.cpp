@@ -192,7 +192,7 @@ TEST(HandoverH2R, WithdrawDuringApproachRetreatsAndRetries) {
   EXPECT_EQ(rig.ctl.count("gripper 0.08") + rig.ctl.count("gripper 0.00"), gripper_calls);
   EXPECT_LT((rig.world.tcp.translation() - rig.fsm->params().safe_pose.translation()).norm(), 0.05);
   EXPECT_EQ(rig.fsm->stats().aborts, 1);
-  EXPECT_EQ(rig.fsm->stats().retries, 1);
+  EXPECT_EQ(rig.fsm->stats().retries, 0);  // waiting: no retry until the person comes back
   // second offer succeeds
   rig.world.moveHand(kMeet, 0.5);
   rig.person = releasesAfterGrip();
@@ -201,6 +201,8 @@ TEST(HandoverH2R, WithdrawDuringApproachRetreatsAndRetries) {
                                   "Approach", "Grasp", "WaitForRelease", "Retract", "Done"}));
   EXPECT_STREQ(rig.fsm->stats().outcome, "success");
   EXPECT_EQ(rig.fsm->stats().handovers, 1);
+  EXPECT_EQ(rig.fsm->stats().aborts, 1);
+  EXPECT_EQ(rig.fsm->stats().retries, 1);
 }
 
 // Withdrawing is going back to where the hand rested, whichever way that
@@ -459,7 +461,7 @@ TEST(HandoverH2R, PersonWhoNeverComesBackEndsAborted) {
             (Leaves{"SelectDirection", "WaitForOffer", "Approach", "Retreat", "WaitAgain", "Aborted"}));
   EXPECT_STREQ(rig.fsm->stats().outcome, "aborted");
   EXPECT_EQ(rig.fsm->stats().aborts, 1);
-  EXPECT_EQ(rig.fsm->stats().retries, 1);
+  EXPECT_EQ(rig.fsm->stats().retries, 0);  // left for good: tried once, no retry
 }
 
 // A person who withdraws to where their hand rested before the reach (within
@@ -521,7 +523,7 @@ TEST(HandoverH2R, NoReleaseOpensAndRetreatsWithoutPayload) {
   EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "WaitForOffer", "Approach", "Grasp", "WaitForRelease",
                                   "RetreatOpen", "WaitAgain"}));
   EXPECT_EQ(rig.fsm->stats().aborts, 1);
-  EXPECT_EQ(rig.fsm->stats().retries, 1);
+  EXPECT_EQ(rig.fsm->stats().retries, 0);  // not back yet
 }
 
 // A person who takes the object back while the fingers hold it (they
