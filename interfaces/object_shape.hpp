@@ -73,4 +73,41 @@ inline double signedDistance(const ObjectShape& s, const Eigen::Vector3d& p) {
   return 0.0;
 }
 
+/// Distance (m, >= 0) from the point `p` (object frame) along the direction
+/// `u_in` (object frame, any length > 0) to where the ray leaves the shape:
+/// how much of the object lies ahead of p that way. 0 when p is outside, for
+/// a zero direction, or when the shape is unknown.
+inline double exitDistance(const ObjectShape& s, const Eigen::Vector3d& p, const Eigen::Vector3d& u_in) {
+  const double n = u_in.norm();
+  if (!(n > 0.0) || !s.known() || signedDistance(s, p) >= 0.0) return 0.0;
+  const Eigen::Vector3d u = u_in / n;
+  // the ray's exit through the slab |x . a| <= h (a unit, p inside it)
+  const auto slab = [&](double pa, double ua, double h) {
+    if (std::abs(ua) < 1e-12) return 1e9;
+    return ((ua > 0.0 ? h : -h) - pa) / ua;
+  };
+  double t = 0.0;
+  switch (s.kind) {
+    case ObjectShape::Kind::kSphere: {
+      const double b = p.dot(u), c = p.squaredNorm() - s.size.x() * s.size.x();
+      t = -b + std::sqrt(std::max(0.0, b * b - c));
+      break;
+    }
+    case ObjectShape::Kind::kCylinder: {
+      // the side: |p_xy + t u_xy| = r; the caps: the slab of half height along z
+      const double a = u.head<2>().squaredNorm(), b = p.head<2>().dot(u.head<2>()),
+                   c = p.head<2>().squaredNorm() - s.size.x() * s.size.x();
+      const double side = a > 1e-12 ? (-b + std::sqrt(std::max(0.0, b * b - a * c))) / a : 1e9;
+      t = std::min(side, slab(p.z(), u.z(), 0.5 * s.size.y()));
+      break;
+    }
+    case ObjectShape::Kind::kBox:
+      t = std::min({slab(p.x(), u.x(), 0.5 * s.size.x()), slab(p.y(), u.y(), 0.5 * s.size.y()),
+                    slab(p.z(), u.z(), 0.5 * s.size.z())});
+      break;
+    case ObjectShape::Kind::kUnknown: break;
+  }
+  return std::max(0.0, t);
+}
+
 }  // namespace handover::io

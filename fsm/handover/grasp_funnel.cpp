@@ -29,7 +29,16 @@ FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry&
   const Vector3 turn = rel.angle() * rel.axis();
   const double widening = finger_half_span * std::hypot(turn.x(), turn.z());
   f.fit = f.clearance - std::abs(mid_plane) - widening;
+  const Isometry grasp_in_object = object.inverse() * grasp;
+  f.near_face = io::exitDistance(shape, grasp_in_object.translation(), -grasp_in_object.linear().col(2));
   return f;
+}
+
+double padDepth(const FingerFit& f, double along, double pad_reach) { return along + pad_reach + f.near_face; }
+
+bool deepEnough(const FingerFit& f, double along, double pad_reach, double grip_depth) {
+  if (f.near_face > 1e6) return true;  // unknown shape: nothing to tell
+  return padDepth(f, along, pad_reach) >= std::min(grip_depth, 0.5 * (f.near_face + pad_reach));
 }
 
 double funnelStandoff(const FingerFit& f, double max_standoff, double margin) {

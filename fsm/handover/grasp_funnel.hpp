@@ -33,7 +33,23 @@ struct FingerFit {
   /// m: the room per side at perfect alignment with the grasp frame
   /// (opening minus the object's width across the grasp's fingers, halved).
   double clearance = 1e9;
+  /// m: the object behind the grasp point, back along the approach axis to
+  /// its surface (the depth the pads can close on when the TCP is at the
+  /// grasp; from the shape). Large when the shape is unknown.
+  double near_face = 1e9;
 };
+
+/// m: how deep the finger pads reach into the object along the approach
+/// axis with the TCP `along` (m) past the grasp point on that axis (negative:
+/// short of it); the pads end `pad_reach` (m) past the TCP.
+double padDepth(const FingerFit& f, double along, double pad_reach);
+
+/// The pads reach deep enough into the object to close on it: `grip_depth`
+/// (m), or half the depth the grasp itself gives where that is less (a grasp
+/// declared near the surface). A thin object across the fingers (a phone
+/// lying flat) fits laterally long before it lies between the pads: closed
+/// 1.4 cm short, the fingertips met above it and landed on its top.
+bool deepEnough(const FingerFit& f, double along, double pad_reach, double grip_depth);
 
 /// tcp, object, grasp: world poses (grasp = the frame the TCP should reach on
 /// the object); opening: the open fingers' total gap, m; finger_half_span:

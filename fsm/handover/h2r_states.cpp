@@ -314,9 +314,16 @@ bool Grasp::onRun(HandoverContext& ctx) {
     if (touch_force_ > 0.0 && feelTouch(ctx, f)) f = fitNow(ctx);  // the corrected grasp's fit
     // the funnel's standoff, reached at standoff_speed (the fit is as noisy as the object's pose)
     slideToward(ctx, ctrl(), funnel_, funnelStandoff(f, funnel_.max_standoff, funnel_.margin), touch_shift_);
-    // closes only on an object between the fingers (the funnel's last part)
-    if (f.fit <= 0.0 || positionError(ctx.in.tcp_pose, correctedGraspFrame(ctx)) > pos_tol_ ||
-        !alignedWhenClosed(ctx.in, pos_tol_, rot_tol_, closingTime(ctx, f)))
+    // closes only on an object between the fingers (the funnel's last part), and between
+    // the pads along the approach axis when they meet it (a thin object fits across long before)
+    const Isometry grasp = correctedGraspFrame(ctx);
+    const double lead = closingTime(ctx, f);
+    const Vector3 approach = grasp.linear().col(2);
+    const double along = (ctx.in.tcp_pose.translation() - grasp.translation()).dot(approach) +
+                         lead * (ctx.in.tcp_velocity - ctx.in.target_velocity).head<3>().dot(approach);
+    if (f.fit <= 0.0 || positionError(ctx.in.tcp_pose, grasp) > pos_tol_ ||
+        !alignedWhenClosed(ctx.in, pos_tol_, rot_tol_, lead) ||
+        !deepEnough(f, along, ctx.params->finger_pad_reach, ctx.params->grip_depth))
       return false;
     ctx.force_before_grasp = ctx.force;  // reference for the release test
     ctrl().setGripper(ctx.params->gripper_close_width, ctx.params->gripForce(ctx.object.mass, ctx.comInTcp()));

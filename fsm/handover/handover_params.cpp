@@ -97,6 +97,8 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
   if (g.has("closing_speed")) p.gripper_closing_speed = positive(g, "closing_speed", 1.0);
   if (g.has("empty_width")) p.gripper_empty_width = inRange(g, "empty_width", 0.0, 0.08);
   if (g.has("finger_half_span")) p.finger_half_span = inRange(g, "finger_half_span", 0.0, 0.05);
+  if (g.has("pad_reach")) p.finger_pad_reach = inRange(g, "pad_reach", 0.0, 0.05);
+  if (g.has("grip_depth")) p.grip_depth = inRange(g, "grip_depth", 0.0, 0.05);
   {
     const YamlReader grip = g.child("grip");
     p.grip_friction = positive(grip, "friction", 2.0);

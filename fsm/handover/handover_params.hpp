@@ -75,6 +75,13 @@ struct HandoverParams {
   /// fingers: the lever by which a turn of the gripper against the object
   /// widens the object's footprint between the fingers (grasp_funnel.hpp)
   double finger_half_span = 0.012;
+  /// m: how far the finger pads reach past the TCP along the approach axis
+  /// (the Panda's: 9.5 mm)
+  double finger_pad_reach = 0.0095;
+  /// m: how deep the pads must reach into the object when they meet it for
+  /// Grasp to close (half the grasp's own depth where that is less;
+  /// grasp_funnel.hpp deepEnough)
+  double grip_depth = 0.006;
   /// The grip on the object (gripper.grip): each finger presses with F, and
   /// friction holds 2 mu F against the object's weight and the retract's
   /// accelerations, F >= margin m (g + acceleration) / (2 mu); and each pad's

@@ -186,5 +186,54 @@ TEST(GraspFunnelSlide, WithoutAnAccelerationLimitMovesAtItsSpeed) {
   EXPECT_EQ(set_point.rate, 0.0);
 }
 
+
+// How much of the object lies behind the grasp point toward the gripper, from
+// the shape: the depth the pads can close on.
+TEST(GraspFunnel, TheObjectBehindTheGraspPointIsMeasuredAlongTheApproachAxis) {
+  const Vector3 p(0.5, 0.0, 0.3);
+  // a side grasp through a bottle's axis: its radius lies toward the gripper
+  EXPECT_NEAR(fingerFit(sideGrasp(p), at(p), sideGrasp(p), cylinder(0.03, 0.2), kOpening, kSpan).near_face, 0.03, 1e-9);
+  // a phone lying flat taken from above across its width: half its 8 mm
+  Isometry top = Isometry::Identity();
+  top.linear() = Eigen::AngleAxisd(M_PI, Vector3::UnitX()).toRotationMatrix();  // approach down, z_w
+  top.translation() = p;
+  const io::ObjectShape phone = box(0.15, 0.072, 0.008);
+  EXPECT_NEAR(fingerFit(top, at(p), top, phone, kOpening, kSpan).near_face, 0.004, 1e-9);
+  // the same grasp 5 cm along the phone: still its half thickness
+  top.translation() = p + Vector3(-0.05, 0, 0);
+  EXPECT_NEAR(fingerFit(top, at(p), top, phone, kOpening, kSpan).near_face, 0.004, 1e-9);
+  // a ball grasped from the side 1 cm off its centre across the fingers: the chord's half
+  const io::ObjectShape ball{io::ObjectShape::Kind::kSphere, Vector3(0.03, 0, 0)};
+  const Isometry off = sideGrasp(p + Vector3(0, 0.01, 0));
+  EXPECT_NEAR(fingerFit(off, at(p), off, ball, kOpening, kSpan).near_face, std::sqrt(0.03 * 0.03 - 0.01 * 0.01), 1e-9);
+}
+
+TEST(GraspFunnel, ThePadsMustReachIntoAThinObjectBeforeTheFingersClose) {
+  const Vector3 p(0.5, 0.0, 0.3);
+  Isometry top = Isometry::Identity();
+  top.linear() = Eigen::AngleAxisd(M_PI, Vector3::UnitX()).toRotationMatrix();
+  top.translation() = p;
+  const FingerFit phone = fingerFit(top, at(p), top, box(0.15, 0.072, 0.008), kOpening, kSpan);
+  ASSERT_GT(phone.fit, 0.0);  // it fits across the fingers
+  constexpr double kReach = 0.0095, kDepth = 0.006;
+  // 1.4 cm short (the TCP above it): the pad tips end above its top (-0.5 mm into it)
+  EXPECT_NEAR(padDepth(phone, -0.014, kReach), -0.0005, 1e-9);
+  EXPECT_FALSE(deepEnough(phone, -0.014, kReach, kDepth));
+  EXPECT_TRUE(deepEnough(phone, -0.007, kReach, kDepth));  // 6.5 mm into it
+  EXPECT_TRUE(deepEnough(phone, 0.0, kReach, kDepth));
+  // a bottle from the side: 2 cm short still closes on 3.95 cm of it
+  const FingerFit bottle = fingerFit(sideGrasp(p), at(p), sideGrasp(p), cylinder(0.03, 0.2), kOpening, kSpan);
+  EXPECT_TRUE(deepEnough(bottle, -0.02, kReach, kDepth));
+  // a grasp declared at the object's surface asks half of what it gives (4.75 mm)
+  Isometry surface = top;
+  surface.translation() = p + Vector3(0, 0, 0.004);
+  const FingerFit flat = fingerFit(surface, at(p), surface, box(0.15, 0.072, 0.008), kOpening, kSpan);
+  EXPECT_NEAR(flat.near_face, 0.0, 1e-9);
+  EXPECT_TRUE(deepEnough(flat, -0.004, kReach, kDepth));
+  EXPECT_FALSE(deepEnough(flat, -0.006, kReach, kDepth));
+  // an unknown shape tells nothing: never held back
+  EXPECT_TRUE(deepEnough(fingerFit(top, at(p), top, io::ObjectShape{}, kOpening, kSpan), -0.05, kReach, kDepth));
+}
+
 }  // namespace
 }  // namespace handover::fsm

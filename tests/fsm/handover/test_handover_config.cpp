@@ -105,6 +105,12 @@ TEST(HandoverConfig, TakeGainsAndTheGraspFunnel) {
   EXPECT_NE(msg.find("funnel_margin"), std::string::npos) << msg;
   msg = loadError(replaced(shipped(), "finger_half_span: 0.012", "finger_half_span: -0.01"));
   EXPECT_NE(msg.find("params.gripper.finger_half_span"), std::string::npos) << msg;
+  EXPECT_GT(fsm.params().finger_pad_reach, 0.0);
+  EXPECT_GT(fsm.params().grip_depth, 0.0);
+  msg = loadError(replaced(shipped(), "pad_reach: 0.0095", "pad_reach: 0.2"));
+  EXPECT_NE(msg.find("params.gripper.pad_reach"), std::string::npos) << msg;
+  msg = loadError(replaced(shipped(), "grip_depth: 0.006", "grip_depth: -0.006"));
+  EXPECT_NE(msg.find("params.gripper.grip_depth"), std::string::npos) << msg;
   msg = loadError(replaced(shipped(), "touch_force: 5.0", "touch_force: -5.0"));
   EXPECT_NE(msg.find("touch_force"), std::string::npos) << msg;
   msg = loadError(replaced(shipped(), "max_touches: 2", "max_touches: 20"));
