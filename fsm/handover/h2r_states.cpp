@@ -400,12 +400,20 @@ void WaitForRelease::hold(HandoverContext& ctx) {
 
 bool WaitForRelease::onRun(HandoverContext& ctx) {
   const bool hand_seen = fresh(ctx.in.hand, ctx.params->max_data_age);
-  // the hand where it grips the object, as the gripper that holds the object sees it
-  const Vector3 hand_at = ctx.in.tcp_pose.inverse(Eigen::Isometry) * ctx.in.hand.pose.translation();
+  // the hand where it grips the object, as the gripper that holds the object sees it (the
+  // TCP's frame), and beside the gripper along the world's axes: it has left its grip once it
+  // moved away in both. In the TCP's frame alone, a wrist that turned 7 degrees under the load
+  // while the person still held on moved the hand 1.5 cm (a 6 cm lever, s_08: the robot
+  // retracted against their grip and lost the mug); along the world's axes alone, a hand
+  // that turns with the wrist moves as much
+  const Vector3 hand_rel = ctx.in.hand.pose.translation() - ctx.in.tcp_pose.translation();
+  const Vector3 hand_at = ctx.in.tcp_pose.linear().transpose() * hand_rel;
   if (hand_seen && !hand_started_) {
     hand_start_ = hand_at;
+    hand_start_world_ = hand_rel;
     hand_started_ = true;
   }
+  const double hand_moved = std::min((hand_at - hand_start_).norm(), (hand_rel - hand_start_world_).norm());
   const double weight = ctx.object.mass * ctx.params->gravity;
   const bool carries = share_ >= 0.0 ? ctx.in.load_share >= share_
                                      : ctx.addedWeight(ctx.force_before_grasp) >= fraction_ * weight;
@@ -441,7 +449,7 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   if (since_ < 0.0) since_ = ctx.time;
   if (carry_since_ < 0.0) carry_since_ = ctx.time;
   // the person's hand is still on it; after release_wait with the whole load, let it be
-  if (share_ >= 0.0 && hand_seen && (hand_at - hand_start_).norm() < distance_ && ctx.time - carry_since_ < wait_) {
+  if (share_ >= 0.0 && hand_seen && hand_moved < distance_ && ctx.time - carry_since_ < wait_) {
     since_ = -1.0;
     return false;
   }

@@ -231,6 +231,7 @@ class WaitForRelease : public HandoverState {
   double carry_since_ = -1.0;  ///< s, since when the robot carries the load
   bool hand_started_ = false;  ///< hand_start_ is set
   Vector3 hand_start_ = Vector3::Zero();  ///< m, the hand in the TCP's frame when first seen in this state
+  Vector3 hand_start_world_ = Vector3::Zero();  ///< m, the hand minus the TCP (world axes) then
   double since_ = -1.0;
 };
 

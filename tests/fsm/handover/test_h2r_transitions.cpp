@@ -719,6 +719,30 @@ TEST(HandoverH2R, AHandThatLeavesPastTheGripperIsSeenToLetGo) {
   EXPECT_EQ(rig.ctl.count("payload 0.30"), 1);
 }
 
+// The robot bears the weight while the person still grips the object, and
+// the wrist turns under the load about the TCP: the hand, still, moves in the
+// TCP's frame by the turn times its lever, but not beside the gripper along
+// the world's axes. That is no release (in the TCP's frame alone it was:
+// 7 degrees at a 6 cm lever, the robot retracted against the person's grip
+// and lost the mug, outsider s_08).
+TEST(HandoverH2R, AWristTurningUnderTheLoadIsNoRelease) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("WaitForRelease", 6.0)) << rig.fsm->activePath();
+  rig.world.share = 1.0;  // the load came over; the person holds on regardless
+  const double lever = (rig.world.hand - rig.world.tcp.translation()).norm();
+  ASSERT_GT(lever, 0.01);
+  const double turn = 2.0 * std::asin(std::min(1.0, 0.025 / (2.0 * lever)));  // the hand 2.5 cm in the TCP's frame
+  const double start = rig.world.time;
+  rig.person = [start, turn](World& w) {
+    const double a = turn * std::min(1.0, (w.time - start) / 0.5);
+    w.tcp.linear() = w.tcp.linear() * Eigen::AngleAxisd(a, Vector3::UnitX()).toRotationMatrix();
+  };
+  rig.runFor(1.5);
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "WaitForRelease")) << rig.fsm->activePath();
+  EXPECT_EQ(rig.ctl.count("payload 0.30"), 0);
+}
+
 TEST(HandoverH2R, EmptyGraspIsMissedAndRetried) {
   Rig rig;
   rig.world.graspable = false;  // the fingers close on nothing
