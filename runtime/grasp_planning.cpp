@@ -22,8 +22,8 @@ cg::GraspSelectionConfig presentationSelectionConfig(cg::GraspSelectionConfig co
 }
 
 namespace {
-std::vector<cg::GraspSpec> presentationSpecs(const control::Isometry& presentation, const control::Vector3& pivot,
-                                             const cg::GraspSelectionConfig& config) {
+std::vector<cg::GraspSpec> declaredPresentations(const control::Isometry& presentation, const control::Vector3& pivot,
+                                                 const cg::GraspSelectionConfig& config) {
   cg::GraspSpec upright;
   upright.placement = presentation;
   upright.has_free_axis = true;  // any turn about the hand's vertical
@@ -46,6 +46,27 @@ std::vector<cg::GraspSpec> presentationSpecs(const control::Isometry& presentati
   return specs;
 }
 }  // namespace
+
+std::vector<cg::GraspSpec> presentationSpecs(const GraspPlanningSettings& settings) {
+  std::vector<cg::GraspSpec> specs =
+      declaredPresentations(settings.presentation, settings.presentation_pivot, settings.config);
+  // the grasp point seen from the object's centre (object frame); the free part lies opposite
+  const control::Vector3 g = settings.held_grasp.translation();
+  constexpr double kNearCentre = 0.02;  // m: a grasp this near the centre leaves no end free of it
+  if (!settings.object_shape.known() || g.norm() < kNearCentre) return specs;
+  const control::Vector3 away = -g.normalized();
+  const control::Vector3 free_point = 0.5 * io::exitDistance(settings.object_shape, control::Vector3::Zero(), away) * away;
+  const std::size_t declared = specs.size();
+  for (std::size_t k = 0; k < declared; ++k) {
+    // the object in the hand frame for this presentation; moved so that its free point is at the grip point
+    const control::Isometry object = specs[k].placement * settings.held_grasp.inverse();
+    cg::GraspSpec shifted = specs[k];
+    shifted.preference = 0.0;
+    shifted.placement = Eigen::Translation3d(-(object * free_point)) * specs[k].placement;
+    specs.push_back(shifted);
+  }
+  return specs;
+}
 
 control::Vector3 receiverPull(const perception::HumanEstimate& person) {
   control::Vector3 d = person.upper_arm.translation() - person.hand.translation();
@@ -106,7 +127,7 @@ GraspPlanning::GraspPlanning(const control::Model& model, const GraspPlanningSet
     : model_(model),
       settings_(settings),
       object_(model, settings.object_grasps, settings.config),
-      hand_(model, presentationSpecs(settings.presentation, settings.presentation_pivot, settings.config),
+      hand_(model, presentationSpecs(settings),
             presentationSelectionConfig(settings.config)) {
   if (static_cast<int>(settings.trunk.size()) > kMaxTrunkObstacles)
     throw std::invalid_argument("GraspPlanning: more trunk capsules than kMaxTrunkObstacles");

@@ -32,6 +32,7 @@
 #include "control/collision/collision_model.hpp"
 #include "control/grasp/grasp_selector.hpp"
 #include "fsm/handover/grasp_plan.hpp"
+#include "interfaces/object_shape.hpp"
 #include "perception/perception_estimator.hpp"
 
 namespace handover::runtime {
@@ -63,6 +64,11 @@ struct GraspPlanningSettings {
   std::vector<control::grasp::GraspSpec> object_grasps;  ///< what the object admits (at least one)
   control::Isometry presentation = control::Isometry::Identity();  ///< declared TCP pose in the receiver's hand frame
   control::Vector3 presentation_pivot = control::Vector3::Zero();   ///< m, the object's centre there (the tilt's pivot)
+  /// The give's grasp on the object (TCP in the object frame) and the object's
+  /// shape: a presentation may also put the receiver's hand on the part of the
+  /// object away from the gripper (presentationSpecs). Unknown shape: not.
+  control::Isometry held_grasp = control::Isometry::Identity();
+  io::ObjectShape object_shape;
   double forearm_length = 0.27, upper_arm_length = 0.33;  ///< m, the person's arm capsules
   double forearm_radius = 0.045, upper_arm_radius = 0.055;  ///< m
   double hand_radius = 0.05;  ///< m, a sphere around the grip point (take: grasp away from the hand)
@@ -77,6 +83,17 @@ struct GraspPlanningSettings {
   std::vector<control::grasp::ObstacleCapsule> trunk;
   PersonKeeps keeps;  ///< what the collision constraints keep from the person (zero: only no overlap)
 };
+
+/// The give's presentations (TCP poses in the receiver's hand frame, with
+/// free turns about the hand's z): the declared one upright and tilted by
+/// config.presentation_tilt about the hand's x and y through the object's
+/// centre; and each of these with the object moved so that the hand's grip
+/// point lies on its free part, halfway from its centre to its surface on the
+/// side away from the grasp (an object held near one end: the declared seat
+/// put a bottle held 8 cm below its centre with the gripper inside the
+/// receiver's hand, and the approach stopped 6 cm short until the give timed
+/// out). Not for a grasp within 2 cm of the object's centre, nor an unknown shape.
+std::vector<control::grasp::GraspSpec> presentationSpecs(const GraspPlanningSettings& settings);
 
 /// At most this many trunk capsules (GraspPlanningSettings::trunk).
 constexpr int kMaxTrunkObstacles = 4;

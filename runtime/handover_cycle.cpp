@@ -92,6 +92,8 @@ HandoverCycle::HandoverCycle(const CycleSettings& settings)
     ps.object_grasps = settings.object_grasps;
     ps.presentation = machine_->context().presentation.offset;
     ps.presentation_pivot = machine_->params().object_in_hand.translation();
+    ps.held_grasp = machine_->context().grasp.offset;
+    ps.object_shape = machine_->context().object.shape;
     ps.forearm_length = settings.forearm_length;
     ps.upper_arm_length = settings.upper_arm_length;
     ps.forearm_radius = settings.collision.person.forearm_radius;

@@ -396,3 +396,62 @@ TEST(GraspPlanning, AHeldObjectWaitsOutOfTheWayOfTheReceiverWhoWillReachForIt) {
 
 }  // namespace
 }  // namespace handover::runtime
+
+namespace handover::runtime {
+namespace {
+/// A bottle (radius 3.3 cm, 22 cm) held from the side 8 cm below its centre,
+/// presented upright with its centre 5 cm above the receiver's grip point.
+GraspPlanningSettings bottleHeldByItsBase(const control::Vector3& grasp_at) {
+  GraspPlanningSettings s = bottleSettings(false);
+  s.held_grasp = s.object_grasps.front().placement;
+  s.held_grasp.translation() = grasp_at;
+  s.object_shape.kind = io::ObjectShape::Kind::kCylinder;
+  s.object_shape.size = control::Vector3(0.033, 0.22, 0.0);
+  s.presentation_pivot = control::Vector3(0.0, 0.0, 0.05);
+  s.presentation = Eigen::Translation3d(s.presentation_pivot) * s.held_grasp;  // object upright, centre at the pivot
+  return s;
+}
+
+// Each presentation also comes with the object moved so that the receiver's
+// grip point lies on its free part, halfway from its centre to the end away
+// from the grasp; none for a grasp at the centre or an unknown shape.
+TEST(GraspPlanning, PresentationsAlsoPutTheHandOnTheObjectsFreePart) {
+  const GraspPlanningSettings s = bottleHeldByItsBase(control::Vector3(0.0, 0.0, -0.08));
+  const std::vector<cg::GraspSpec> specs = presentationSpecs(s);
+  ASSERT_EQ(specs.size(), 6u);  // upright, two tilts, and each moved
+  for (std::size_t k = 3; k < 6; ++k) {
+    const control::Isometry object = specs[k].placement * s.held_grasp.inverse();  // object in the hand frame
+    const control::Vector3 grip_in_object = object.inverse() * control::Vector3::Zero();
+    EXPECT_NEAR(grip_in_object.z(), 0.055, 1e-9) << k;  // half of the 11 cm above the centre
+    EXPECT_NEAR(grip_in_object.head<2>().norm(), 0.0, 1e-9) << k;
+    EXPECT_EQ(specs[k].preference, 0.0);
+    // the gripper is farther from the grip point than in the declared seat
+    EXPECT_GT(specs[k].placement.translation().norm(), specs[k - 3].placement.translation().norm() + 0.05) << k;
+  }
+  EXPECT_EQ(presentationSpecs(bottleHeldByItsBase(control::Vector3(0.0, 0.0, 0.01))).size(), 3u);
+  GraspPlanningSettings unknown = s;
+  unknown.object_shape = io::ObjectShape{};
+  EXPECT_EQ(presentationSpecs(unknown).size(), 3u);
+}
+
+// The bottle held by its base, given: seated as declared, the gripper lies in
+// the receiver's hand, and the constraints that keep it off the hand hold it
+// short (the approach stopped 6 cm short until the give timed out, outsider
+// s_31); the planner puts the hand on the bottle's upper part instead.
+TEST(GraspPlanning, AnObjectHeldByOneEndIsPresentedWithItsOtherEndInTheHand) {
+  GraspPlanningSettings s = bottleHeldByItsBase(control::Vector3(0.0, 0.0, -0.08));
+  s.keeps.hand.gripper = 0.021;
+  s.keeps.hand.arm = 0.04;
+  s.hand_box_half_extents = control::Vector3(0.045, 0.04, 0.015);
+  const control::Vector3 hand(0.58, -0.05, 0.37);
+  perception::PerceptionEstimate e = offered(0.2, hand + control::Vector3(0.0, 0.0, 0.08));
+  e.object.holder = perception::ObjectHolder::Robot;
+  GraspPlanning planning(panda(), s);
+  planning.update(e, readyConfiguration(), true);
+  ASSERT_TRUE(planning.handPlan().valid);
+  const control::Isometry object = planning.handPlan().target_in_observed * s.held_grasp.inverse();
+  EXPECT_GT((object.inverse() * control::Vector3::Zero()).z(), 0.03) << "the hand holds the upper part";
+  EXPECT_LT(presentationShortfall(s, e, planning.handPlan().q_target), 0.005);
+}
+}  // namespace
+}  // namespace handover::runtime
