@@ -46,6 +46,11 @@ double funnelStandoff(const FingerFit& f, double max_standoff, double margin) {
   return max_standoff * (1.0 - enclosed);
 }
 
+double GraspFunnel::mouth(const FingerFit& f, double pad_reach) const {
+  if (mouth_clearance < 0.0 || !(f.near_face > 0.0) || f.near_face > 1e6) return max_standoff;
+  return std::min(max_standoff, f.near_face + pad_reach + mouth_clearance);
+}
+
 GraspFunnel::Slide GraspFunnel::step(double standoff, double rate, double goal, double time) {
   Slide s = profile(standoff, rate, goal, time);
   if (!feed_forward) s.rate = s.acceleration = 0.0;

@@ -78,6 +78,9 @@ struct GraspFunnel {
   /// false: 0, the standoff a set-point the PD closes on (as shipped, docs/results.md)
   bool feed_forward = false;
   double margin = 0.5;        ///< share of the clearance the last slide keeps to spare
+  /// m the fingertips wait in front of the object's near face at the funnel's
+  /// mouth (< 0: the mouth is max_standoff whatever the object)
+  double mouth_clearance = -1.0;
   double last_time = 0.0;     ///< s, the last step
 
   /// One step of the slide.
@@ -88,6 +91,13 @@ struct GraspFunnel {
   };
 
   bool enabled() const { return max_standoff > 0.0; }
+  /// m: the funnel's mouth for the fit `f`: the standoff at which the
+  /// fingertips (`pad_reach`, m, past the TCP) wait mouth_clearance in front
+  /// of the object's near face, no farther back than max_standoff. Farther
+  /// back is only a longer slide: the fingers cannot sweep over an object
+  /// they are in front of. max_standoff for an unknown shape or a grasp
+  /// outside the object.
+  double mouth(const FingerFit& f, double pad_reach) const;
   /// Restarts the rate limit at `time` (s).
   void restart(double time) { last_time = time; }
   /// The slide for this cycle from the standoff tracked now (`standoff`, m)

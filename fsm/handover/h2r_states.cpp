@@ -20,6 +20,7 @@ void readFunnel(const YamlReader& def, double standoff, GraspFunnel& funnel) {
   if (funnel.acceleration > 0.0 && !funnel.feed_forward)
     def.child("standoff_acceleration").fail("a smooth slide is fed forward: needs standoff_feed_forward: true");
   funnel.margin = HandoverState::readRange(def, "funnel_margin", 0.0, 1.0);
+  if (def.has("mouth_clearance")) funnel.mouth_clearance = HandoverState::readRange(def, "mouth_clearance", 0.0, standoff);
 }
 
 /// One step of `funnel`'s slide toward `goal` (m) from the standoff tracked now, sent to the
@@ -152,21 +153,23 @@ void Approach::onStart(HandoverContext& ctx) {
 }
 
 void Approach::slideIn(HandoverContext& ctx, bool arrived) {
-  // still brought in: lined up at the full standoff (a stiff slide onto an object
-  // that still moves would strike it); arrived: in as the object fits
+  // still brought in: lined up at the full standoff (a stiff slide onto an object that still
+  // moves would strike it; at the mouth, a lying tube brought in at 1.3 m/s struck the gripper:
+  // g533_00010); arrived: from the mouth (the fingertips just in front of it) in as it fits
+  const Isometry grasp = trackedGraspFrame(ctx);
+  FingerFit f = fitFor(ctx, ctx.in.observed_pose, grasp);
+  const double mouth = funnel_.mouth(f, ctx.params->finger_pad_reach);
   double goal = funnel_.max_standoff;
   if (arrived) {
     // Grasp's fit, and on the approach line across the closing axis too: the slide goes
     // along the line, not diagonally past the hand that holds the object
-    const Isometry grasp = trackedGraspFrame(ctx);
-    FingerFit f = fitFor(ctx, ctx.in.observed_pose, grasp);
     f.fit -= std::abs((grasp.translation() - ctx.in.tcp_pose.translation()).dot(grasp.linear().col(0)));
-    goal = funnelStandoff(f, funnel_.max_standoff, funnel_.margin);
+    goal = funnelStandoff(f, mouth, funnel_.margin);
   }
   const double standoff = slideToward(ctx, ctrl(), funnel_, goal, ctx.tracking_shift);
   // in the funnel the gripper and the hand share the object, as in Grasp: the rules that keep
   // the fingers off the object and apart from the hand would stop the slide short of it
-  ctrl().relaxHandClearance(standoff < funnel_.max_standoff);
+  ctrl().relaxHandClearance(standoff < mouth - 1e-6);
 }
 
 bool Approach::onRun(HandoverContext& ctx) {
@@ -236,6 +239,10 @@ void Grasp::configure(const YamlReader& def) {
     touch_time_ = readRange(def, "touch_time", 0.0, 1.0);
     max_touches_ = static_cast<int>(readRange(def, "max_touches", 0.0, 10.0));
   }
+  if (def.has("jam_force")) {
+    jam_force_ = readRange(def, "jam_force", 1.0, 1000.0);
+    jam_time_ = readRange(def, "jam_time", 0.0, 2.0);
+  }
 }
 
 void Grasp::onStart(HandoverContext& ctx) {
@@ -245,6 +252,7 @@ void Grasp::onStart(HandoverContext& ctx) {
   touches_ = 0;
   touch_since_ = -1.0;
   touch_felt_ = false;
+  jam_since_ = -1.0;
   touch_shift_.setZero();
   if (funnel_.acceleration > 0.0) {
     // the slide goes on from where the approach left it, at its rate (fed forward): a
@@ -253,8 +261,9 @@ void Grasp::onStart(HandoverContext& ctx) {
     trackTarget(ctx, ctrl(), false, ctx.tracking_standoff, TrackingGains::kAlign);
     if (rate != 0.0) setStandoff(ctx, ctrl(), false, ctx.tracking_standoff, touch_shift_, rate);
   } else {
-    trackTarget(ctx, ctrl(), false,
-                std::min(ctx.tracking_standoff, funnelStandoff(fitNow(ctx), funnel_.max_standoff, funnel_.margin)),
+    const FingerFit f = fitNow(ctx);
+    const double mouth = funnel_.mouth(f, ctx.params->finger_pad_reach);
+    trackTarget(ctx, ctrl(), false, std::min(ctx.tracking_standoff, funnelStandoff(f, mouth, funnel_.margin)),
                 TrackingGains::kAlign);
   }
 }
@@ -303,17 +312,33 @@ bool Grasp::feelTouch(HandoverContext& ctx, const FingerFit& f) {
   return true;
 }
 
+bool Grasp::jammed(const HandoverContext& ctx) {
+  if (jam_force_ <= 0.0) return false;
+  const double push = -ctx.in.tool_contact.head<3>().dot(ctx.in.tcp_pose.linear().col(2));
+  if (push < jam_force_) {
+    jam_since_ = -1.0;
+    return false;
+  }
+  if (jam_since_ < 0.0) jam_since_ = ctx.time;
+  return ctx.time - jam_since_ >= jam_time_;
+}
+
 bool Grasp::onRun(HandoverContext& ctx) {
   if (!closing_) {
     if (withdrawn(ctx, false)) {
       setOutput(withdrawn_);
       return true;
     }
+    if (jammed(ctx)) {
+      setOutput(missed_);
+      return true;
+    }
     setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kAlign, ctx.in.object.velocity.head<3>().norm());
     FingerFit f = fitNow(ctx);
     if (touch_force_ > 0.0 && feelTouch(ctx, f)) f = fitNow(ctx);  // the corrected grasp's fit
     // the funnel's standoff, reached at standoff_speed (the fit is as noisy as the object's pose)
-    slideToward(ctx, ctrl(), funnel_, funnelStandoff(f, funnel_.max_standoff, funnel_.margin), touch_shift_);
+    slideToward(ctx, ctrl(), funnel_, funnelStandoff(f, funnel_.mouth(f, ctx.params->finger_pad_reach), funnel_.margin),
+                touch_shift_);
     // closes only on an object between the fingers (the funnel's last part), and between
     // the pads along the approach axis when they meet it (a thin object fits across long before)
     const Isometry grasp = correctedGraspFrame(ctx);

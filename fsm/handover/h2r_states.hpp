@@ -133,7 +133,11 @@ class Approach : public HandoverState {
 /// ended at the grasp also once closing) with standoff_acceleration (m/s^2,
 /// optional: a smooth slide that goes on from the approach's) and
 /// funnel_margin (share of the clearance, 0..1); touch_force (N, optional,
-/// default 0: no correction) with touch_time (s) and max_touches.
+/// default 0: no correction) with touch_time (s) and max_touches; jam_force
+/// (N, optional, default 0: off) with jam_time (s): the open gripper pushed
+/// back that hard for that long is jammed against the object (it struck the
+/// palm or the fingers' base, no correction frees it): Missed, the gripper
+/// backs off open instead of pressing on into it.
 class Grasp : public HandoverState {
  public:
   Grasp();
@@ -150,6 +154,9 @@ class Grasp : public HandoverState {
   /// A fingertip on the object: corrects the grasp toward it; true when it
   /// did. `f`: the fit before. RT safe.
   bool feelTouch(HandoverContext& ctx, const FingerFit& f);
+  /// The open gripper pushed back along its approach axis by at least
+  /// jam_force for jam_time. RT safe.
+  bool jammed(const HandoverContext& ctx);
 
   int grasped_, missed_, withdrawn_;
   double pos_tol_ = 0.01, rot_tol_ = 0.17, confirm_time_ = 0.3;
@@ -164,6 +171,9 @@ class Grasp : public HandoverState {
   int touches_ = 0;
   double touch_since_ = -1.0;    ///< s, the push began; < 0: none
   bool touch_felt_ = false;      ///< this push was answered (waits for it to end)
+  double jam_force_ = 0.0;       ///< N, push along the approach axis that is a jam (0: off)
+  double jam_time_ = 0.2;        ///< s, for this long
+  double jam_since_ = -1.0;      ///< s, the jam's push began; < 0: none
   Vector3 touch_shift_ = Vector3::Zero();  ///< m, the grasp's correction, object frame
   TakeBack pull_;                ///< while closing
 };

@@ -235,5 +235,31 @@ TEST(GraspFunnel, ThePadsMustReachIntoAThinObjectBeforeTheFingersClose) {
   EXPECT_TRUE(deepEnough(fingerFit(top, at(p), top, io::ObjectShape{}, kOpening, kSpan), -0.05, kReach, kDepth));
 }
 
+// The funnel's mouth: the fingertips wait just in front of the object, not a
+// fixed distance back (a longer slide buys nothing once they are in front of it).
+TEST(GraspFunnel, TheMouthPutsTheFingertipsJustInFrontOfTheObject) {
+  const Vector3 p(0.5, 0.0, 0.3);
+  constexpr double kReach = 0.0095;
+  GraspFunnel funnel;
+  funnel.max_standoff = 0.08;
+  const FingerFit bottle = fingerFit(sideGrasp(p), at(p), sideGrasp(p), cylinder(0.03, 0.2), kOpening, kSpan);
+  EXPECT_EQ(funnel.mouth(bottle, kReach), 0.08);  // no mouth_clearance: the fixed mouth
+  funnel.mouth_clearance = 0.02;
+  // a bottle from the side: its radius, the pads' reach and the clearance
+  EXPECT_NEAR(funnel.mouth(bottle, kReach), 0.03 + kReach + 0.02, 1e-9);
+  // a deep grasp never waits farther back than max_standoff
+  const FingerFit barrel = fingerFit(sideGrasp(p), at(p), sideGrasp(p), cylinder(0.07, 0.3), kOpening, kSpan);
+  EXPECT_EQ(funnel.mouth(barrel, kReach), 0.08);
+  // an unknown shape, or a grasp frame outside the object: the whole standoff
+  EXPECT_EQ(funnel.mouth(fingerFit(sideGrasp(p), at(p), sideGrasp(p), io::ObjectShape{}, kOpening, kSpan), kReach),
+            0.08);
+  const Isometry outside = sideGrasp(p + Vector3(-0.05, 0, 0));
+  EXPECT_EQ(funnel.mouth(fingerFit(outside, at(p), outside, cylinder(0.03, 0.2), kOpening, kSpan), kReach), 0.08);
+  // the funnel's standoff at that mouth: all of it while the object does not fit
+  FingerFit off = bottle;
+  off.fit = -0.01;
+  EXPECT_NEAR(funnelStandoff(off, funnel.mouth(bottle, kReach), 0.5), 0.0595, 1e-9);
+}
+
 }  // namespace
 }  // namespace handover::fsm
