@@ -33,6 +33,9 @@ double slideToward(HandoverContext& ctx, ControllerHandle& ctrl, GraspFunnel& fu
   return slide.standoff;
 }
 
+/// N: what pushes the gripper back against its approach axis (the TCP's z).
+double pushBack(const HandoverInput& in) { return -in.tool_contact.head<3>().dot(in.tcp_pose.linear().col(2)); }
+
 /// How the object sits between the open fingers for `grasp` (world).
 FingerFit fitFor(const HandoverContext& ctx, const Isometry& object, const Isometry& grasp) {
   return fingerFit(ctx.in.tcp_pose, object, grasp, ctx.object.shape, ctx.params->gripper_open_width,
@@ -293,7 +296,7 @@ bool Grasp::feelTouch(HandoverContext& ctx, const FingerFit& f) {
   const Eigen::Matrix3d& tcp = ctx.in.tcp_pose.linear();
   // the contact pushes the gripper back against its approach axis (z); a force p at
   // a along the closing axis (y) turns it about x by -a p
-  const double push = -ctx.in.tool_contact.head<3>().dot(tcp.col(2));
+  const double push = pushBack(ctx.in);
   if (push < touch_force_) {
     touch_since_ = -1.0;
     if (push < 0.5 * touch_force_) touch_felt_ = false;  // the push ended: a new one is a new touch
@@ -314,8 +317,7 @@ bool Grasp::feelTouch(HandoverContext& ctx, const FingerFit& f) {
 
 bool Grasp::jammed(const HandoverContext& ctx) {
   if (jam_force_ <= 0.0) return false;
-  const double push = -ctx.in.tool_contact.head<3>().dot(ctx.in.tcp_pose.linear().col(2));
-  if (push < jam_force_) {
+  if (pushBack(ctx.in) < jam_force_) {
     jam_since_ = -1.0;
     return false;
   }
