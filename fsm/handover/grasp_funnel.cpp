@@ -13,8 +13,30 @@ namespace {
 constexpr double kMinClearance = 0.001;
 }  // namespace
 
+double holdDepth(const io::ObjectShape& shape, const Isometry& grasp_in_object, double friction) {
+  if (!shape.known() || !(friction > 0.0)) return 0.0;
+  const Vector3 p = grasp_in_object.translation();
+  const Vector3 a = grasp_in_object.linear().col(2), c = grasp_in_object.linear().col(1);
+  const double near_face = io::exitDistance(shape, p, -a);
+  if (!(near_face > 0.0)) return 0.0;
+  // half the chord across the closing axis where the pads meet the object at depth s
+  const auto half_width = [&](double s) {
+    const Vector3 q = p - a * (near_face - s);
+    return 0.5 * (io::exitDistance(shape, q, c) + io::exitDistance(shape, q, -c));
+  };
+  constexpr int kMaxSteps = 400;
+  const double step = std::max(5e-4, near_face / kMaxSteps);
+  double w = half_width(step);
+  for (double s = step; s + step <= near_face + 1e-12; s += step) {
+    const double next = half_width(s + step);
+    if (next - w <= friction * step) return s;
+    w = next;
+  }
+  return near_face;
+}
+
 FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry& grasp, const io::ObjectShape& shape,
-                    double opening, double finger_half_span) {
+                    double opening, double finger_half_span, double friction) {
   FingerFit f;
   if (!shape.known()) return f;
   const Vector3 grasp_closing = grasp.linear().col(1);
@@ -31,6 +53,7 @@ FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry&
   f.fit = f.clearance - std::abs(mid_plane) - widening;
   const Isometry grasp_in_object = object.inverse() * grasp;
   f.near_face = io::exitDistance(shape, grasp_in_object.translation(), -grasp_in_object.linear().col(2));
+  f.hold_depth = holdDepth(shape, grasp_in_object, friction);
   return f;
 }
 
@@ -39,6 +62,11 @@ double padDepth(const FingerFit& f, double along, double pad_reach) { return alo
 bool deepEnough(const FingerFit& f, double along, double pad_reach, double grip_depth) {
   if (f.near_face > 1e6) return true;  // unknown shape: nothing to tell
   return padDepth(f, along, pad_reach) >= std::min(grip_depth, 0.5 * (f.near_face + pad_reach));
+}
+
+bool holdsWhenClosed(const FingerFit& f, double along, double pad_reach) {
+  if (f.near_face > 1e6 || !(f.hold_depth > 0.0)) return true;
+  return padDepth(f, along, pad_reach) >= std::min(f.hold_depth, 0.5 * (f.near_face + pad_reach));
 }
 
 double funnelStandoff(const FingerFit& f, double max_standoff, double margin) {

@@ -37,7 +37,23 @@ struct FingerFit {
   /// its surface (the depth the pads can close on when the TCP is at the
   /// grasp; from the shape). Large when the shape is unknown.
   double near_face = 1e9;
+  /// m: how deep along the approach axis, from the near face, the pads must
+  /// meet the object for their squeeze to hold it (holdDepth); 0 when not
+  /// asked for (no friction given) or the shape is unknown.
+  double hold_depth = 0.0;
 };
+
+/// m: the depth from the object's near face, along the grasp's approach axis
+/// on the grasp line, from which the object's width across the closing axis
+/// grows no faster than `friction` (mu) per unit depth. Pads that meet it
+/// shallower press on a side that slopes away from them (a ball, a tube lying
+/// across the fingers): the squeeze pushes the object out along the approach
+/// axis harder than friction holds it (a tube of radius 23 mm closed on 12 mm
+/// short of its axis stayed between the fingers until the retract, then
+/// squeezed out). A flat face: about 0; a round section of radius r:
+/// r (1 - mu / sqrt(1 + mu^2)). The near face itself when no depth is steep
+/// enough. Frames: the object's; units m. RT safe (a scan of at most 400 steps).
+double holdDepth(const io::ObjectShape& shape, const Isometry& grasp_in_object, double friction);
 
 /// m: how deep the finger pads reach into the object along the approach
 /// axis with the TCP `along` (m) past the grasp point on that axis (negative:
@@ -51,11 +67,19 @@ double padDepth(const FingerFit& f, double along, double pad_reach);
 /// 1.4 cm short, the fingertips met above it and landed on its top.
 bool deepEnough(const FingerFit& f, double along, double pad_reach, double grip_depth);
 
+/// The pads, with the TCP `along` (m) past the grasp point now, already reach
+/// the object's hold depth (FingerFit::hold_depth), or half the depth the
+/// grasp itself gives where that is less. Judged now, not at the predicted
+/// contact: the slide slows as the fingers close, and a contact shallower
+/// than planned is a round object squeezed out.
+bool holdsWhenClosed(const FingerFit& f, double along, double pad_reach);
+
 /// tcp, object, grasp: world poses (grasp = the frame the TCP should reach on
 /// the object); opening: the open fingers' total gap, m; finger_half_span:
 /// m, half a finger's contact face.
+/// friction > 0: also the hold depth (FingerFit::hold_depth) for that mu.
 FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry& grasp, const io::ObjectShape& shape,
-                    double opening, double finger_half_span);
+                    double opening, double finger_half_span, double friction = 0.0);
 
 /// Standoff (m) along the approach axis for this fit: max_standoff while the
 /// object does not fit, 0 once the fit keeps `margin` (a fraction of the

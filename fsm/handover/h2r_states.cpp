@@ -37,9 +37,9 @@ double slideToward(HandoverContext& ctx, ControllerHandle& ctrl, GraspFunnel& fu
 double pushBack(const HandoverInput& in) { return -in.tool_contact.head<3>().dot(in.tcp_pose.linear().col(2)); }
 
 /// How the object sits between the open fingers for `grasp` (world).
-FingerFit fitFor(const HandoverContext& ctx, const Isometry& object, const Isometry& grasp) {
+FingerFit fitFor(const HandoverContext& ctx, const Isometry& object, const Isometry& grasp, double friction = 0.0) {
   return fingerFit(ctx.in.tcp_pose, object, grasp, ctx.object.shape, ctx.params->gripper_open_width,
-                   ctx.params->finger_half_span);
+                   ctx.params->finger_half_span, friction);
 }
 }  // namespace
 
@@ -280,7 +280,7 @@ Isometry Grasp::correctedGraspFrame(const HandoverContext& ctx) const {
 FingerFit Grasp::fitNow(const HandoverContext& ctx) const {
   Isometry object = ctx.in.observed_pose;
   object.translation() += object.linear() * touch_shift_;
-  return fitFor(ctx, object, correctedGraspFrame(ctx));
+  return fitFor(ctx, object, correctedGraspFrame(ctx), ctx.params->grip_friction);
 }
 
 double Grasp::closingTime(const HandoverContext& ctx, const FingerFit& f) const {
@@ -348,9 +348,16 @@ bool Grasp::onRun(HandoverContext& ctx) {
     const Vector3 approach = grasp.linear().col(2);
     const double along = (ctx.in.tcp_pose.translation() - grasp.translation()).dot(approach) +
                          lead * (ctx.in.tcp_velocity - ctx.in.target_velocity).head<3>().dot(approach);
+    // and with the pads already where the object's side holds them (a round one): judged on the
+    // object's estimate, not the observed object, which lags one that still moves (1 cm at 0.2 m/s)
+    const bool seen = ctx.in.object.valid && ctx.in.object.age <= ctx.params->max_data_age;
+    const Vector3 grasp_now =
+        seen ? Vector3(ctx.in.object.pose * (ctx.in.observed_pose.inverse() * grasp.translation())) : grasp.translation();
+    const double along_now = (ctx.in.tcp_pose.translation() - grasp_now).dot(approach);
     if (f.fit <= 0.0 || positionError(ctx.in.tcp_pose, grasp) > pos_tol_ ||
         !alignedWhenClosed(ctx.in, pos_tol_, rot_tol_, lead) ||
-        !deepEnough(f, along, ctx.params->finger_pad_reach, ctx.params->grip_depth))
+        !deepEnough(f, along, ctx.params->finger_pad_reach, ctx.params->grip_depth) ||
+        !holdsWhenClosed(f, along_now, ctx.params->finger_pad_reach))
       return false;
     ctx.force_before_grasp = ctx.force;  // reference for the release test
     ctrl().setGripper(ctx.params->gripper_close_width, ctx.params->gripForce(ctx.object.mass, ctx.comInTcp()));

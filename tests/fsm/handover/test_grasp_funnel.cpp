@@ -235,6 +235,60 @@ TEST(GraspFunnel, ThePadsMustReachIntoAThinObjectBeforeTheFingersClose) {
   EXPECT_TRUE(deepEnough(fingerFit(top, at(p), top, io::ObjectShape{}, kOpening, kSpan), -0.05, kReach, kDepth));
 }
 
+io::ObjectShape sphere(double radius) {
+  io::ObjectShape s;
+  s.kind = io::ObjectShape::Kind::kSphere;
+  s.size = Vector3(radius, 0.0, 0.0);
+  return s;
+}
+
+// Where the pads' squeeze holds: a flat face at once, a round section only
+// from r (1 - mu / sqrt(1 + mu^2)) deep (the side's slope there is mu).
+TEST(GraspFunnel, ARoundSideHoldsOnlyFromTheDepthWhereItsSlopeIsTheFriction) {
+  constexpr double kStep = 5e-4;  // the scan's resolution
+  for (double mu : {0.5, 1.0}) {
+    const double round = 1.0 - mu / std::sqrt(1.0 + mu * mu);
+    // a tube lying across the fingers (grasp on its axis, approach across it): the "around_axis" grasp
+    Isometry across = Isometry::Identity();
+    across.linear() = Eigen::AngleAxisd(M_PI / 2, Vector3::UnitY()).toRotationMatrix();
+    EXPECT_NEAR(holdDepth(cylinder(0.023, 0.27), across, mu), 0.023 * round, 2 * kStep) << mu;
+    EXPECT_NEAR(holdDepth(sphere(0.04), Isometry::Identity(), mu), 0.04 * round, 2 * kStep) << mu;
+    // the same tube upright, from above (down its axis): the pads slide along its side
+    Isometry top = Isometry::Identity();
+    top.linear() = Eigen::AngleAxisd(M_PI, Vector3::UnitX()).toRotationMatrix();
+    EXPECT_LE(holdDepth(cylinder(0.023, 0.27), top, mu), 2 * kStep) << mu;
+    // a box face on
+    EXPECT_LE(holdDepth(box(0.06, 0.05, 0.2), Isometry::Identity(), mu), 2 * kStep) << mu;
+  }
+  // a box across its edge (turned 45 degrees about the approach axis' normal): its sides slope 1:1,
+  // steeper than mu = 0.5 all the way: only its far half holds
+  Isometry edge = Isometry::Identity();
+  edge.linear() = Eigen::AngleAxisd(M_PI / 4, Vector3::UnitX()).toRotationMatrix();
+  const double diagonal = 0.05 * std::sqrt(2.0);
+  EXPECT_NEAR(holdDepth(box(0.2, 0.05, 0.05), edge, 0.5), 0.5 * diagonal, 2 * kStep);
+  EXPECT_DOUBLE_EQ(holdDepth(io::ObjectShape{}, Isometry::Identity(), 0.5), 0.0);
+  EXPECT_DOUBLE_EQ(holdDepth(sphere(0.04), Isometry::Identity(), 0.0), 0.0);
+}
+
+// The close waits until the pads reach that depth now: the tube of radius 23 mm, the fingers
+// met 12 mm short of its axis (a 39 mm chord) and it squeezed out in the retract (g547_00075).
+TEST(GraspFunnel, TheFingersCloseOnARoundObjectOnlyWhereTheyHoldIt) {
+  const Vector3 p(0.5, 0.0, 0.3);
+  constexpr double kReach = 0.0095, kMu = 0.5;
+  const FingerFit tube = fingerFit(sideGrasp(p), at(p), sideGrasp(p), cylinder(0.023, 0.27), kOpening, kSpan, kMu);
+  // the bottle stands: from the side its section across the fingers is a disc
+  EXPECT_NEAR(tube.hold_depth, 0.023 * (1.0 - kMu / std::sqrt(1.0 + kMu * kMu)), 1e-3);
+  const double short_by = 0.023 + kReach - tube.hold_depth;  // how far short the pads just hold
+  EXPECT_TRUE(holdsWhenClosed(tube, -short_by + 1e-3, kReach));
+  EXPECT_FALSE(holdsWhenClosed(tube, -short_by - 1e-3, kReach));
+  EXPECT_FALSE(holdsWhenClosed(tube, -0.029, kReach));  // where g547_00075 closed, from the object as it really was
+  // a box holds wherever the pads touch it; without the friction asked for, nothing is held back
+  const FingerFit flat = fingerFit(sideGrasp(p), at(p), sideGrasp(p), box(0.05, 0.05, 0.2), kOpening, kSpan, kMu);
+  EXPECT_TRUE(holdsWhenClosed(flat, -0.03, kReach));
+  EXPECT_TRUE(holdsWhenClosed(fingerFit(sideGrasp(p), at(p), sideGrasp(p), cylinder(0.023, 0.27), kOpening, kSpan),
+                              -0.03, kReach));
+}
+
 // The funnel's mouth: the fingertips wait just in front of the object, not a
 // fixed distance back (a longer slide buys nothing once they are in front of it).
 TEST(GraspFunnel, TheMouthPutsTheFingertipsJustInFrontOfTheObject) {
