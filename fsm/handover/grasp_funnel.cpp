@@ -35,6 +35,20 @@ double holdDepth(const io::ObjectShape& shape, const Isometry& grasp_in_object, 
   return near_face;
 }
 
+double HoldDepthCache::get(const io::ObjectShape& shape, const Isometry& grasp_in_object, double friction) {
+  const bool same = valid_ && shape.kind == shape_.kind && shape.size == shape_.size && friction == friction_ &&
+                    (grasp_in_object.translation() - key_.translation()).norm() <= 1e-3 &&
+                    Eigen::AngleAxisd(key_.linear().transpose() * grasp_in_object.linear()).angle() <= 0.02;
+  if (!same) {
+    depth_ = holdDepth(shape, grasp_in_object, friction);
+    shape_ = shape;
+    key_ = grasp_in_object;
+    friction_ = friction;
+    valid_ = true;
+  }
+  return depth_;
+}
+
 FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry& grasp, const io::ObjectShape& shape,
                     double opening, double finger_half_span, double friction) {
   FingerFit f;

@@ -55,6 +55,21 @@ struct FingerFit {
 /// enough. Frames: the object's; units m. RT safe (a scan of at most 400 steps).
 double holdDepth(const io::ObjectShape& shape, const Isometry& grasp_in_object, double friction);
 
+/// holdDepth for a grasp that changes rarely (a new choice, a touch's
+/// correction), as the 1 ms step needs it: the scan is redone only when the
+/// grasp moved in the object frame by more than 1 mm or 0.02 rad, or the
+/// shape or friction changed. RT safe.
+class HoldDepthCache {
+ public:
+  double get(const io::ObjectShape& shape, const Isometry& grasp_in_object, double friction);
+
+ private:
+  bool valid_ = false;
+  io::ObjectShape shape_;
+  Isometry key_ = Isometry::Identity();
+  double friction_ = 0.0, depth_ = 0.0;
+};
+
 /// m: how deep the finger pads reach into the object along the approach
 /// axis with the TCP `along` (m) past the grasp point on that axis (negative:
 /// short of it); the pads end `pad_reach` (m) past the TCP.

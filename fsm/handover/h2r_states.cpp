@@ -37,9 +37,9 @@ double slideToward(HandoverContext& ctx, ControllerHandle& ctrl, GraspFunnel& fu
 double pushBack(const HandoverInput& in) { return -in.tool_contact.head<3>().dot(in.tcp_pose.linear().col(2)); }
 
 /// How the object sits between the open fingers for `grasp` (world).
-FingerFit fitFor(const HandoverContext& ctx, const Isometry& object, const Isometry& grasp, double friction = 0.0) {
+FingerFit fitFor(const HandoverContext& ctx, const Isometry& object, const Isometry& grasp) {
   return fingerFit(ctx.in.tcp_pose, object, grasp, ctx.object.shape, ctx.params->gripper_open_width,
-                   ctx.params->finger_half_span, friction);
+                   ctx.params->finger_half_span);
 }
 }  // namespace
 
@@ -280,7 +280,10 @@ Isometry Grasp::correctedGraspFrame(const HandoverContext& ctx) const {
 FingerFit Grasp::fitNow(const HandoverContext& ctx) const {
   Isometry object = ctx.in.observed_pose;
   object.translation() += object.linear() * touch_shift_;
-  return fitFor(ctx, object, correctedGraspFrame(ctx), ctx.params->grip_friction);
+  const Isometry grasp = correctedGraspFrame(ctx);
+  FingerFit f = fitFor(ctx, object, grasp);
+  f.hold_depth = hold_depth_.get(ctx.object.shape, object.inverse() * grasp, ctx.params->grip_friction);
+  return f;
 }
 
 double Grasp::closingTime(const HandoverContext& ctx, const FingerFit& f) const {

@@ -159,6 +159,7 @@ class Grasp : public HandoverState {
   bool jammed(const HandoverContext& ctx);
 
   int grasped_, missed_, withdrawn_;
+  mutable HoldDepthCache hold_depth_;  ///< the object's hold depth for the grasp now (fitNow): one scan per grasp
   double pos_tol_ = 0.01, rot_tol_ = 0.17, confirm_time_ = 0.3;
   double stall_speed_ = 0.01;
   GraspFunnel funnel_;           ///< max_standoff 0: no funnel

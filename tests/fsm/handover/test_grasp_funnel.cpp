@@ -270,6 +270,26 @@ TEST(GraspFunnel, ARoundSideHoldsOnlyFromTheDepthWhereItsSlopeIsTheFriction) {
   EXPECT_DOUBLE_EQ(holdDepth(sphere(0.04), Isometry::Identity(), 0.0), 0.0);
 }
 
+// The 1 ms step scans once per grasp: a grasp that stays (within noise) reads the last scan,
+// one that moves (a new choice, a touch's correction) or another shape is scanned again.
+TEST(GraspFunnel, TheHoldDepthIsScannedAgainOnlyForAnotherGrasp) {
+  HoldDepthCache cache;
+  Isometry across = Isometry::Identity();
+  across.linear() = Eigen::AngleAxisd(M_PI / 2, Vector3::UnitY()).toRotationMatrix();
+  const io::ObjectShape tube = cylinder(0.023, 0.27);
+  const double d = cache.get(tube, across, 0.5);
+  EXPECT_DOUBLE_EQ(d, holdDepth(tube, across, 0.5));
+  Isometry jitter = across;
+  jitter.translation() += Vector3(0.0, 0.0, 0.0005);  // noise: the last scan stands
+  EXPECT_DOUBLE_EQ(cache.get(tube, jitter, 0.5), d);
+  Isometry turned = across;
+  turned.rotate(Eigen::AngleAxisd(M_PI / 2, Vector3::UnitZ()));  // fingers across its length now: flat
+  EXPECT_DOUBLE_EQ(cache.get(tube, turned, 0.5), holdDepth(tube, turned, 0.5));
+  EXPECT_LT(cache.get(tube, turned, 0.5), 0.5 * d);
+  EXPECT_DOUBLE_EQ(cache.get(box(0.05, 0.05, 0.2), across, 0.5), holdDepth(box(0.05, 0.05, 0.2), across, 0.5));
+  EXPECT_DOUBLE_EQ(cache.get(tube, across, 1.0), holdDepth(tube, across, 1.0));
+}
+
 // The close waits until the pads reach that depth now: the tube of radius 23 mm, the fingers
 // met 12 mm short of its axis (a 39 mm chord) and it squeezed out in the retract (g547_00075).
 TEST(GraspFunnel, TheFingersCloseOnARoundObjectOnlyWhereTheyHoldIt) {
