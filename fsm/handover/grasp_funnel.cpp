@@ -50,7 +50,7 @@ double HoldDepthCache::get(const io::ObjectShape& shape, const Isometry& grasp_i
 }
 
 FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry& grasp, const io::ObjectShape& shape,
-                    double opening, double finger_half_span, double friction) {
+                    double opening, double finger_half_span) {
   FingerFit f;
   if (!shape.known()) return f;
   const Vector3 grasp_closing = grasp.linear().col(1);
@@ -67,7 +67,6 @@ FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry&
   f.fit = f.clearance - std::abs(mid_plane) - widening;
   const Isometry grasp_in_object = object.inverse() * grasp;
   f.near_face = io::exitDistance(shape, grasp_in_object.translation(), -grasp_in_object.linear().col(2));
-  f.hold_depth = holdDepth(shape, grasp_in_object, friction);
   return f;
 }
 

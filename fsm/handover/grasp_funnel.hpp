@@ -38,8 +38,8 @@ struct FingerFit {
   /// grasp; from the shape). Large when the shape is unknown.
   double near_face = 1e9;
   /// m: how deep along the approach axis, from the near face, the pads must
-  /// meet the object for their squeeze to hold it (holdDepth); 0 when not
-  /// asked for (no friction given) or the shape is unknown.
+  /// meet the object for their squeeze to hold it (holdDepth, which fingerFit
+  /// leaves to its caller: the scan is for once per grasp); 0: not asked.
   double hold_depth = 0.0;
 };
 
@@ -92,9 +92,8 @@ bool holdsWhenClosed(const FingerFit& f, double along, double pad_reach);
 /// tcp, object, grasp: world poses (grasp = the frame the TCP should reach on
 /// the object); opening: the open fingers' total gap, m; finger_half_span:
 /// m, half a finger's contact face.
-/// friction > 0: also the hold depth (FingerFit::hold_depth) for that mu.
 FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry& grasp, const io::ObjectShape& shape,
-                    double opening, double finger_half_span, double friction = 0.0);
+                    double opening, double finger_half_span);
 
 /// Standoff (m) along the approach axis for this fit: max_standoff while the
 /// object does not fit, 0 once the fit keeps `margin` (a fraction of the

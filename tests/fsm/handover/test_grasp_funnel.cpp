@@ -295,7 +295,8 @@ TEST(GraspFunnel, TheHoldDepthIsScannedAgainOnlyForAnotherGrasp) {
 TEST(GraspFunnel, TheFingersCloseOnARoundObjectOnlyWhereTheyHoldIt) {
   const Vector3 p(0.5, 0.0, 0.3);
   constexpr double kReach = 0.0095, kMu = 0.5;
-  const FingerFit tube = fingerFit(sideGrasp(p), at(p), sideGrasp(p), cylinder(0.023, 0.27), kOpening, kSpan, kMu);
+  FingerFit tube = fingerFit(sideGrasp(p), at(p), sideGrasp(p), cylinder(0.023, 0.27), kOpening, kSpan);
+  tube.hold_depth = holdDepth(cylinder(0.023, 0.27), at(p).inverse() * sideGrasp(p), kMu);
   // the bottle stands: from the side its section across the fingers is a disc
   EXPECT_NEAR(tube.hold_depth, 0.023 * (1.0 - kMu / std::sqrt(1.0 + kMu * kMu)), 1e-3);
   const double short_by = 0.023 + kReach - tube.hold_depth;  // how far short the pads just hold
@@ -303,7 +304,8 @@ TEST(GraspFunnel, TheFingersCloseOnARoundObjectOnlyWhereTheyHoldIt) {
   EXPECT_FALSE(holdsWhenClosed(tube, -short_by - 1e-3, kReach));
   EXPECT_FALSE(holdsWhenClosed(tube, -0.029, kReach));  // where g547_00075 closed, from the object as it really was
   // a box holds wherever the pads touch it; without the friction asked for, nothing is held back
-  const FingerFit flat = fingerFit(sideGrasp(p), at(p), sideGrasp(p), box(0.05, 0.05, 0.2), kOpening, kSpan, kMu);
+  FingerFit flat = fingerFit(sideGrasp(p), at(p), sideGrasp(p), box(0.05, 0.05, 0.2), kOpening, kSpan);
+  flat.hold_depth = holdDepth(box(0.05, 0.05, 0.2), at(p).inverse() * sideGrasp(p), kMu);
   EXPECT_TRUE(holdsWhenClosed(flat, -0.03, kReach));
   EXPECT_TRUE(holdsWhenClosed(fingerFit(sideGrasp(p), at(p), sideGrasp(p), cylinder(0.023, 0.27), kOpening, kSpan),
                               -0.03, kReach));
