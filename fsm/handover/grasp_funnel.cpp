@@ -72,14 +72,21 @@ FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry&
 
 double padDepth(const FingerFit& f, double along, double pad_reach) { return along + pad_reach + f.near_face; }
 
+namespace {
+// the pads reach `wanted` into the object, or half what the grasp itself gives where that is less
+bool padsReach(const FingerFit& f, double along, double pad_reach, double wanted) {
+  return padDepth(f, along, pad_reach) >= std::min(wanted, 0.5 * (f.near_face + pad_reach));
+}
+}  // namespace
+
 bool deepEnough(const FingerFit& f, double along, double pad_reach, double grip_depth) {
   if (f.near_face > 1e6) return true;  // unknown shape: nothing to tell
-  return padDepth(f, along, pad_reach) >= std::min(grip_depth, 0.5 * (f.near_face + pad_reach));
+  return padsReach(f, along, pad_reach, grip_depth);
 }
 
 bool holdsWhenClosed(const FingerFit& f, double along, double pad_reach) {
   if (f.near_face > 1e6 || !(f.hold_depth > 0.0)) return true;
-  return padDepth(f, along, pad_reach) >= std::min(f.hold_depth, 0.5 * (f.near_face + pad_reach));
+  return padsReach(f, along, pad_reach, f.hold_depth);
 }
 
 double funnelStandoff(const FingerFit& f, double max_standoff, double margin) {

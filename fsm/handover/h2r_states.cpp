@@ -353,7 +353,7 @@ bool Grasp::onRun(HandoverContext& ctx) {
                          lead * (ctx.in.tcp_velocity - ctx.in.target_velocity).head<3>().dot(approach);
     // and with the pads already where the object's side holds them (a round one): judged on the
     // object's estimate, not the observed object, which lags one that still moves (1 cm at 0.2 m/s)
-    const bool seen = ctx.in.object.valid && ctx.in.object.age <= ctx.params->max_data_age;
+    const bool seen = fresh(ctx.in.object, ctx.params->max_data_age);
     const Vector3 grasp_now =
         seen ? Vector3(ctx.in.object.pose * (ctx.in.observed_pose.inverse() * grasp.translation())) : grasp.translation();
     const double along_now = (ctx.in.tcp_pose.translation() - grasp_now).dot(approach);
