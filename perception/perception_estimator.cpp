@@ -144,8 +144,10 @@ const PerceptionEstimate& PerceptionEstimator::estimate(double now, ObjectHolder
       }
       h.has_velocity = true;
       h.hand_velocity << hand_f_.velocity(), hand_f_.angularVelocity();
+      h.hand_speed_std = std::sqrt(std::max(0.0, hand_f_.positionCovariance().vv));
     } else {
       h.has_velocity = false;
+      h.hand_speed_std = 0.0;
       h.predicted = 0.0;
       h.hand = latest_.hand.isometry();
       h.forearm = latest_.forearm.isometry();
@@ -155,6 +157,7 @@ const PerceptionEstimate& PerceptionEstimator::estimate(double now, ObjectHolder
   } else {
     h.stale = true;
     h.has_velocity = false;
+    h.hand_speed_std = 0.0;
     h.age = h.silence = h.latency = h.predicted = 0.0;
   }
 
@@ -167,8 +170,10 @@ const PerceptionEstimate& PerceptionEstimator::estimate(double now, ObjectHolder
       // a tracked object is measured; otherwise it sits in the hand at the offset
       if (h.valid) o.pose = latest_.has_object ? tracked_object : h.hand * settings_.hand_T_object;
       o.has_velocity = h.valid && h.has_velocity;
+      o.speed_std = o.has_velocity ? h.hand_speed_std : 0.0;
       if (o.has_velocity && latest_.has_object) {
         o.velocity << object_f_.velocity(), object_f_.angularVelocity();
+        o.speed_std = std::sqrt(std::max(0.0, object_f_.positionCovariance().vv));
       } else if (o.has_velocity) {  // carried rigidly by the hand
         const Eigen::Vector3d w = h.hand_velocity.tail<3>();
         o.velocity.head<3>() = h.hand_velocity.head<3>() + w.cross(o.pose.translation() - h.hand.translation());
@@ -179,12 +184,14 @@ const PerceptionEstimate& PerceptionEstimator::estimate(double now, ObjectHolder
       o.valid = true;
       o.stale = false;
       o.has_velocity = false;
+      o.speed_std = 0.0;
       o.pose = tcp_pose * tcp_T_object;
       break;
     case ObjectHolder::Nobody:
       o.valid = false;
       o.stale = true;
       o.has_velocity = false;
+      o.speed_std = 0.0;
       break;
   }
   return est_;

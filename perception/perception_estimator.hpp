@@ -92,6 +92,10 @@ struct HumanEstimate {
   /// differences of noisy samples); `has_velocity` false otherwise.
   bool has_velocity = false;
   Eigen::Matrix<double, 6, 1> hand_velocity = Eigen::Matrix<double, 6, 1>::Zero();
+  /// m/s, the motion model's standard deviation of each component of the
+  /// hand's linear velocity (its covariance; large while a track is young:
+  /// two samples of a hand at rest differ by the sensor's noise); 0 without one.
+  double hand_speed_std = 0.0;
 };
 
 struct ObjectEstimate {
@@ -104,6 +108,7 @@ struct ObjectEstimate {
   /// the object's origin); `has_velocity` false otherwise.
   bool has_velocity = false;
   Eigen::Matrix<double, 6, 1> velocity = Eigen::Matrix<double, 6, 1>::Zero();
+  double speed_std = 0.0;  ///< m/s, as HumanEstimate::hand_speed_std, for `velocity`
 };
 
 struct PerceptionEstimate {

@@ -51,6 +51,11 @@ void WaitForPerson::configure(const YamlReader& def) {
   settle_speed_ = readPositive(def, "settle_speed", 5.0);
   settle_time_ = readRange(def, "settle_time", 0.0, 10.0);
   if (def.has("home_radius")) home_radius_ = readRange(def, "home_radius", 0.0, 1.0);
+  if (def.has("home_rest_time")) {
+    if (!def.has("home_radius")) def.child("home_rest_time").fail("a rest at home needs home_radius");
+    home_rest_time_ = readRange(def, "home_rest_time", settle_time_, 60.0);
+  }
+  if (def.has("approach_significance")) significance_ = readRange(def, "approach_significance", 0.0, 10.0);
   if (def.has("pull_hold_time") && !hand_) def.child("pull_hold_time").fail("only a give's wait (for the receiver) is taken from");
   if (take_.configure(def)) pulled_ = declareOutput("Pulled");
 }
@@ -91,7 +96,11 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
     rest_.reset();
     return false;
   }
-  bool ready = speedToward(p.workspace.center, body) > approach_speed_;
+  // coming: toward the robot faster than approach_speed by more than `significance_` standard
+  // deviations of the velocity estimate (a track two samples old of a hand at rest reads the
+  // sensor's noise as 0.1-0.25 m/s: approaches began 0.04 s into the run, the arm on its way to
+  // a person who had not moved yet and then brought the object in across its path)
+  bool ready = speedToward(p.workspace.center, body) - significance_ * body.speed_std > approach_speed_;
   const bool at_home = home_radius_ > 0.0 && home_known && (pos - home).norm() < home_radius_;
   // resting, on its displacement (rest_window.hpp): a person holding the object still after a
   // dropout was never seen to rest by the noisy speed, and the robot gave up on them
@@ -99,10 +108,14 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   // not at the place the person held it before they offered it (a rest there is no offer)
   const bool within_reach =
       (pos - p.workspace.center).norm() <= p.reach_radius || (left_home && latestPlan(ctx, hand_).valid);
-  if (!within_reach || at_home) {
+  // at home a rest is an offer only once it lasted home_rest_time (a person holding the object
+  // out where they stand and waiting), with the same tolerance on its displacement
+  const double window = at_home ? home_rest_time_ : settle_time_;
+  if (!within_reach || (at_home && home_rest_time_ <= 0.0)) {
     rest_.reset();
   } else {
-    ready = rest_.rests(pos, ctx.time, settle_speed_, settle_time_) || ready;
+    ready = rest_.rests(pos, ctx.time, window > 0.0 ? settle_speed_ * settle_time_ / window : settle_speed_, window) ||
+            ready;
   }
   if (ready) {
     cameBack(ctx);

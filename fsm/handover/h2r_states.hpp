@@ -24,8 +24,14 @@ namespace handover::fsm {
 /// WaitForReceiver also needs HandoverInput::hand_open. With home_radius
 /// (m, optional; after an abort) a rest within that distance of where the
 /// body was first seen (the person's rest place, HandoverContext::home_*)
-/// is the person back at rest, not an offer: only coming toward the robot is.
-/// Keys: approach_speed, settle_speed (m/s), settle_time (s), home_radius (m).
+/// is the person back at rest, not an offer: only coming toward the robot is;
+/// with home_rest_time (s, >= settle_time) such a rest is an offer once it
+/// lasted that long (a person who holds the object out where they were
+/// first seen, and waits). Coming is faster than approach_speed by
+/// approach_significance (default 0) standard deviations of the velocity
+/// estimate (SensedBody::speed_std).
+/// Keys: approach_speed, settle_speed (m/s), settle_time (s), home_radius (m),
+/// home_rest_time (s), approach_significance.
 class WaitForPerson : public HandoverState {
  public:
   explicit WaitForPerson(bool hand);
@@ -42,6 +48,8 @@ class WaitForPerson : public HandoverState {
   ReceiverTake take_;  ///< a give: a receiver who takes the object the robot waits with
   double approach_speed_ = 0.1, settle_speed_ = 0.05, settle_time_ = 0.3;
   double home_radius_ = 0.0;  ///< m, 0: a rest anywhere within reach counts
+  double home_rest_time_ = 0.0;  ///< s, a rest at home that long is an offer (0: never)
+  double significance_ = 0.0;    ///< standard deviations of the speed estimate coming must exceed
   RestWindow rest_;  ///< the body resting within reach
 };
 

@@ -13,6 +13,9 @@ namespace handover::fsm {
 struct SensedBody {
   Isometry pose = Isometry::Identity();  ///< body frame in the world (hand: grip point)
   Vector6 velocity = Vector6::Zero();    ///< estimated [linear (m/s); angular (rad/s)]
+  /// m/s, standard deviation of each component of the linear velocity estimate (0: taken as
+  /// exact): a track a few samples old knows little of its speed
+  double speed_std = 0.0;
   bool valid = false;                    ///< a sample has been received and is usable
   double age = 1e9;                      ///< s since the last sample (stale data grows this)
   double stamp = -1.0;                   ///< s, measurement time of the latest sample (-1: none); a new sample changes it

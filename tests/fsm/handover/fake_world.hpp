@@ -169,6 +169,7 @@ struct World {
   bool dropout = false;     // perception sends nothing
   double velocity_noise = 0.0;  // m/s: the perceived velocity of the person's hand and what it holds jitters by
                                 // this much, turning each ms (a filter's estimate from a noisy sensor)
+  double speed_std = 0.0;       // m/s: what perception reports as that estimate's standard deviation
   bool knows_rest = false;  // perception predicts where the hand's move ends (its goal)
   double last_sample = 0.0;
   bool hand_open = true;
@@ -270,6 +271,7 @@ struct World {
     const double turn = 2.0 * time * 1000.0;  // rad: a new direction every ms
     const Vector3 jitter = velocity_noise * Vector3(std::cos(turn), std::sin(turn), 0.0);
     in.hand.velocity.head<3>() = hand_vel + jitter;
+    in.hand.speed_std = in.object.speed_std = speed_std;
     in.hand.valid = !dropout;
     in.hand.age = age;
     in.object.pose = objectPose();
