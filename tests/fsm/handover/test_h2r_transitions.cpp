@@ -13,6 +13,12 @@ namespace handover::fsm::test {
 namespace {
 
 
+/// The shipped WaitForOffer state's keys (config/fsm.yaml).
+YAML::Node shippedWaitForOffer() {
+  return YAML::LoadFile(HandoverFsm::defaultConfigPath())["machine"]["states"]["Handover"]["states"]["HumanToRobot"]
+                                                             ["states"]["WaitForOffer"];
+}
+
 /// Lets go once the robot has gripped the object for 0.1 s, and withdraws.
 std::function<void(World&)> releasesAfterGrip() {
   auto gripped_since = std::make_shared<double>(-1.0);
@@ -69,8 +75,7 @@ TEST(HandoverH2R, SuccessfulTakeVisitsEveryPhase) {
 // person who holds the object out where they stand, and waits.
 TEST(HandoverH2R, AnObjectRestingWhereItWasFirstSeenIsOfferedOnlyOnceItWasHeldThereLong) {
   Rig rig;
-  const YAML::Node wait = YAML::LoadFile(HandoverFsm::defaultConfigPath())["machine"]["states"]["Handover"]["states"]
-                                                                       ["HumanToRobot"]["states"]["WaitForOffer"];
+  const YAML::Node wait = shippedWaitForOffer();
   const double settle = wait["settle_time"].as<double>(), home_rest = wait["home_rest_time"].as<double>();
   ASSERT_GT(home_rest, settle + 0.5);
   rig.world.hand = rig.world.hand_goal = Vector3(0.55, 0.25, 0.25);  // 0.6 m from the shoulder, in the workspace
@@ -580,8 +585,7 @@ TEST(HandoverH2R, AnObjectHeldStillIsOfferedWhateverItsPerceivedSpeedsNoise) {
   rig.world.object = kMeet + rig.world.object_in_hand;
   // (held where it was first seen: an offer once it rested there for home_rest_time)
   rig.world.velocity_noise = 0.08;
-  const double home_rest = YAML::LoadFile(HandoverFsm::defaultConfigPath())["machine"]["states"]["Handover"]["states"]
-                                         ["HumanToRobot"]["states"]["WaitForOffer"]["home_rest_time"].as<double>();
+  const double home_rest = shippedWaitForOffer()["home_rest_time"].as<double>();
   EXPECT_TRUE(rig.runUntilState("Approach", home_rest + 0.5)) << rig.fsm->activePath();
   EXPECT_GE(rig.world.time, home_rest - 0.01) << "approached before the object rested for home_rest_time";
 }
