@@ -44,13 +44,21 @@ int CollisionConstraint::compute(const ControlContext& ctx, Eigen::Ref<Eigen::Ma
       st = DamperState{};
       continue;
     }
+    // What this row may demand (keeps the QP feasible when the person moves in
+    // fast): at most max_escape, and at most half of what this row alone could
+    // reach with every joint at its acceleration limit (a row through a
+    // near-singular direction or a point near the base cannot do much).
+    const double reach = r.jacobian.cwiseAbs().dot(ctx.model->a_max.transpose());
+    const double escape = std::min(max_escape_, reach_fraction_ * reach);
     if (!st.inside) {
       // a pair closing fast engages early enough for the arm to give way at
-      // max_escape (a damper entered at d slows the approach linearly to 0 at
-      // sDist: it demands v^2 / (d - sDist) at entry), as far out as the
-      // broad phase computes pairs
+      // what the row may demand (a damper entered at d slows the approach
+      // linearly to 0 at sDist: it demands v^2 / (d - sDist) at entry), as far
+      // out as the broad phase computes pairs
       const double closing = std::max(0.0, -r.d_dot);
-      const double engage = std::clamp(s.s_dist + closing * closing / max_escape_, s.i_dist, s.i_dist + broadphase_);
+      const double engage =
+          escape > 0.0 ? std::clamp(s.s_dist + closing * closing / escape, s.i_dist, s.i_dist + broadphase_)
+                       : s.i_dist;
       if (r.distance >= engage) continue;
       // entering: automatic damping accepts the current approach speed
       st.inside = true;
@@ -69,16 +77,11 @@ int CollisionConstraint::compute(const ControlContext& ctx, Eigen::Ref<Eigen::Ma
 
     C.row(rows).setZero();
     C.row(rows).segment<kArmDofs>(VariableLayout::kQdd) = r.jacobian;
-    // d_ddot = Jd qddot + drift >= demand, the demand capped at what the arm
-    // can give (keeps the QP feasible when the person moves in fast): at most
-    // max_escape, and at most half of what this row alone could reach with
-    // every joint at its acceleration limit (a row through a near-singular
-    // direction or a point near the base cannot do much)
-    const double reach = r.jacobian.cwiseAbs().dot(ctx.model->a_max.transpose());
+    // d_ddot = Jd qddot + drift >= demand, the demand capped at `escape`
     DamperSettings engaged = s;
     engaged.i_dist = st.i_dist;
     const double demand = damperLowerBound(r.distance, r.d_dot, r.drift, st.xi, engaged, ctx.dt) + r.drift;
-    lb[rows] = std::min(demand, std::min(max_escape_, reach_fraction_ * reach)) - r.drift;
+    lb[rows] = std::min(demand, escape) - r.drift;
     ub[rows] = inf;
     ++rows;
   }

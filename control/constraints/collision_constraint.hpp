@@ -10,7 +10,8 @@
 // Automatic damping (default): when a pair enters iDist, xi is chosen so the
 // current d_dot is admissible, plus an offset; it stays until the pair leaves.
 // A pair closing faster than the arm can give way within iDist (a person's
-// hand reaching at 1 m/s) engages earlier: at sDist + d_dot^2 / max_escape,
+// hand reaching at 1 m/s) engages earlier: at sDist + d_dot^2 / escape (what
+// the row may demand: max_escape, less where the arm cannot reach it),
 // at most iDist + broadphase_margin; that distance then serves as its iDist
 // until it leaves. Pairs not engaged give no row.
 //
