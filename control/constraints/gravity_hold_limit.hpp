@@ -10,6 +10,11 @@
 // on below di = interaction * scale * tau_max_j; its rate is
 // phi_dot = sign(g_j) G_j qdot with G = dg/dq (gravityJacobian), one row
 // over qddot:  sign(g_j) G_j qddot <= -(damper's lower bound on d_ddot).
+// A fast arm could come into the zone faster than its torque can stop it, so
+// the rate toward the share is also held to what braking can stop:
+// d_dot >= -sqrt(2 a d), a = |d_dot| / t with the stopping time t the
+// largest joint momentum |(M qdot)_i| over the torque the share leaves,
+// (1 - share) of the scaled limit (the gravity Jacobian every cycle).
 // Like the position dampers it gives way to the variable bounds set before it
 // (acceleration, position and velocity limits): the row's bound is raised to
 // the least the bound box allows, so it never makes the QP infeasible with
