@@ -93,7 +93,7 @@ struct ControllerConfig {
 
   struct Limits {
     JointPositionLimitParams position;
-    double velocity_scale = 0.5;
+    double velocity_scale = 0.8;
     /// Fraction of the datasheet acceleration a joint may brake with to stop
     /// before its position limit: its speed toward the limit is capped so it
     /// can (JointVelocityLimit; 0 = no cap, the position damper alone).

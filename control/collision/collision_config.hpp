@@ -123,7 +123,7 @@ struct SensingError {
 
 struct CollisionConfig {
   std::string file;                 ///< where it was read from (messages)
-  double broadphase_margin = 0.05;  ///< m, pairs farther than iDist + this are skipped
+  double broadphase_margin = 0.15;  ///< m, pairs farther than iDist + this are skipped
   /// m/s^2, most acceleration away from a body a damper row may demand (and
   /// never more than half of what the row's Jacobian can reach at the joint
   /// acceleration limits): a person moving in faster than the robot can give

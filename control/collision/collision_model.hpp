@@ -64,7 +64,7 @@ struct CollisionModel {
   std::vector<std::string> rule_names;     ///< pair rules by name (run-time switches)
   std::vector<bool> rule_enabled;          ///< start-up state of each rule
   std::vector<RuleScope> rule_scope;       ///< when each rule is on (collision_config.hpp)
-  double broadphase_margin = 0.05;         ///< m
+  double broadphase_margin = 0.15;         ///< m
   int table = -1, human_hand = -1, human_forearm = -1, human_upper_arm = -1, object = -1;  ///< body indices
   int human_torso = -1, human_legs = -1, human_head = -1;                                  ///< body indices (trunk)
   int human_hand_forecast = -1;                                                            ///< body index

@@ -111,7 +111,7 @@ TEST(Controller, JointLimitsHoldAgainstAPostureBeyondThem) {
   Vector7 beyond;
   for (int i = 0; i < 7; ++i) beyond[i] = (i % 2 == 0) ? m.q_max[i] + 0.5 : m.q_min[i] - 0.5;
   ctl.setPostureTarget(beyond);
-  const Vector7 vlim = 0.5 * m.v_max;
+  const Vector7 vlim = cfg.limits.velocity_scale * m.v_max;
   for (int k = 0; k < 5000; ++k) {
     ctl.step(sim.inputs());
     sim.advance(ctl.lastQdd(), ctl.config().period);

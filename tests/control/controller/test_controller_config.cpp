@@ -41,7 +41,7 @@ TEST(ControllerConfig, ShippedFileLoadsWithPaperDefaults) {
   EXPECT_DOUBLE_EQ(c.posture.gains.stiffness, 10.0);
   // posture only resolves redundancy: far below the tracking task's weight
   EXPECT_LT(c.posture.weight, 1e-4 * c.tracking.weight);
-  EXPECT_DOUBLE_EQ(c.limits.velocity_scale, 0.5);
+  EXPECT_DOUBLE_EQ(c.limits.velocity_scale, 0.8);
   EXPECT_DOUBLE_EQ(c.limits.position.interaction, 0.10);
   EXPECT_DOUBLE_EQ(c.limits.position.safety, 0.01);
 }
