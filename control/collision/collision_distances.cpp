@@ -94,6 +94,9 @@ double coreLowerBound(const CollisionData& cd, const CollisionBody& a, int ia, c
 // gliding along itself sank below sDist while the rows expected it to curve
 // away. The slide rate is held to that of 8 degrees off parallel (exactly
 // parallel segments have no unique closest points).
+// 1 - cos^2 of 8 degrees: sin^2(8 deg)
+constexpr double kMinSlideDeterminant = 0.019369152030840567;
+
 double segmentPairDrift(const CollisionData& cd, int i1, const Vector3& c1, const Vector3& omega1, int i2,
                         const Vector3& c2, const Vector3& omega2, const Vector3& n, double D, const Vector3& dv,
                         const Vector3& da) {
@@ -114,7 +117,7 @@ double segmentPairDrift(const CollisionData& cd, int i1, const Vector3& c1, cons
   const double r2 = in2 ? -dv.dot(u2) - D * n.dot(u2dot) : 0.0;
   if (in1 && in2) {
     const double c = u1.dot(u2);
-    const double det = std::max(1.0 - c * c, 1.0 - std::cos(8.0 * M_PI / 180.0) * std::cos(8.0 * M_PI / 180.0));
+    const double det = std::max(1.0 - c * c, kMinSlideDeterminant);
     // s_dot - c t_dot = r1,  c s_dot - t_dot = r2
     s_dot = (r1 - c * r2) / det;
     t_dot = (c * r1 - r2) / det;
