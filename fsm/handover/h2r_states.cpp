@@ -56,6 +56,7 @@ void WaitForPerson::configure(const YamlReader& def) {
     home_rest_time_ = readRange(def, "home_rest_time", settle_time_, 60.0);
   }
   if (def.has("approach_significance")) significance_ = readRange(def, "approach_significance", 0.0, 10.0);
+  if (def.has("carried_in_distance")) carried_in_ = readRange(def, "carried_in_distance", 0.0, 1.0);
   if (def.has("pull_hold_time") && !hand_) def.child("pull_hold_time").fail("only a give's wait (for the receiver) is taken from");
   if (take_.configure(def)) pulled_ = declareOutput("Pulled");
 }
@@ -108,6 +109,14 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   // not at the place the person held it before they offered it (a rest there is no offer)
   const bool within_reach =
       (pos - p.workspace.center).norm() <= p.reach_radius || (left_home && latestPlan(ctx, hand_).valid);
+  // or carried in: moved on, within reach, carried_in_distance from where it was first seen and not
+  // away from the robot. Brought in from beside the table, an object crosses the robot's front more
+  // than it comes nearer (9 cm nearer the shoulder in a 1.7 s reach): it was taken for an offer only
+  // once it rested, the arm 0.5 m away (hand still to grasp 2.5-4.5 s, seed 631)
+  if (carried_in_ > 0.0 && home_known && within_reach && (pos - home).norm() > carried_in_ &&
+      body.velocity.head<3>().norm() - significance_ * body.speed_std > approach_speed_ &&
+      speedToward(p.workspace.center, body) >= 0.0)
+    ready = true;
   // at home a rest is an offer only once it lasted home_rest_time (a person holding the object
   // out where they stand and waiting), with the same tolerance on its displacement
   const double window = at_home ? home_rest_time_ : settle_time_;
@@ -154,6 +163,7 @@ void Approach::configure(const YamlReader& def) {
 
 void Approach::onStart(HandoverContext& ctx) {
   blind_ = false;
+  withdrawal_.restart();
   take_.restart();
   stall_.restart(ctx.time);
   last_time_ = ctx.time;
@@ -224,7 +234,7 @@ bool Approach::onRun(HandoverContext& ctx) {
     setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow, speed);
     stall_.watch(ctx, ctrl(), hand_, positionError(ctx.in.tcp_pose, ctx.in.target_pose), arrived && plan.valid);
   }
-  if (withdrawn(ctx, hand_)) {
+  if (withdrawal_.withdrawn(ctx, hand_)) {
     setOutput(withdrawn_);
     return true;
   }
@@ -264,6 +274,7 @@ void Grasp::configure(const YamlReader& def) {
 void Grasp::onStart(HandoverContext& ctx) {
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   closing_ = false;
+  withdrawal_.restart();
   funnel_.restart(ctx.time);
   touches_ = 0;
   touch_since_ = -1.0;
@@ -343,7 +354,7 @@ bool Grasp::jammed(const HandoverContext& ctx) {
 
 bool Grasp::onRun(HandoverContext& ctx) {
   if (!closing_) {
-    if (withdrawn(ctx, false)) {
+    if (withdrawal_.withdrawn(ctx, false)) {
       setOutput(withdrawn_);
       return true;
     }

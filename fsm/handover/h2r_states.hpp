@@ -9,6 +9,7 @@
 #include "fsm/handover/rest_window.hpp"
 #include "fsm/handover/stall_recovery.hpp"
 #include "fsm/handover/take_back.hpp"
+#include "fsm/handover/withdrawal_watch.hpp"
 
 namespace handover::fsm {
 
@@ -30,8 +31,12 @@ namespace handover::fsm {
 /// first seen, and waits). Coming is faster than approach_speed by
 /// approach_significance (default 0) standard deviations of the velocity
 /// estimate (SensedBody::speed_std).
+/// With carried_in_distance (m, optional), a body within reach that is still
+/// moving (faster than approach_speed, as significant), not away from the
+/// robot, and that far from where it was first seen is coming too: brought
+/// in from the side, it crosses the robot's front more than it comes nearer.
 /// Keys: approach_speed, settle_speed (m/s), settle_time (s), home_radius (m),
-/// home_rest_time (s), approach_significance.
+/// home_rest_time (s), approach_significance, carried_in_distance (m).
 class WaitForPerson : public HandoverState {
  public:
   explicit WaitForPerson(bool hand);
@@ -50,6 +55,7 @@ class WaitForPerson : public HandoverState {
   double home_radius_ = 0.0;  ///< m, 0: a rest anywhere within reach counts
   double home_rest_time_ = 0.0;  ///< s, a rest at home that long is an offer (0: never)
   double significance_ = 0.0;    ///< standard deviations of the speed estimate coming must exceed
+  double carried_in_ = 0.0;      ///< m from home, moving within reach, not away: coming (0: off)
   RestWindow rest_;  ///< the body resting within reach
 };
 
@@ -100,6 +106,7 @@ class Approach : public HandoverState {
   int near_, withdrawn_, pulled_ = -1;
   ReceiverTake take_;  ///< a give: a receiver who takes the object on its way to them
   StallRecovery stall_;  ///< stall_time: a stalled approach goes on in joint space
+  WithdrawalWatch withdrawal_;  ///< the person leaves: Withdrawn
   double near_distance_ = 0.1;
   double near_orientation_ = M_PI;  ///< rad
   double standoff_ = 0.0;           ///< m, pre-grasp distance along the approach axis
@@ -185,6 +192,7 @@ class Grasp : public HandoverState {
   double jam_since_ = -1.0;      ///< s, the jam's push began; < 0: none
   Vector3 touch_shift_ = Vector3::Zero();  ///< m, the grasp's correction, object frame
   TakeBack pull_;                ///< while closing
+  WithdrawalWatch withdrawal_;   ///< before closing: the person leaves
 };
 
 /// [Released, Withdrawn] Follows, then holds, the grasp pose until the person lets go, for

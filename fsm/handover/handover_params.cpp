@@ -124,6 +124,7 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
   p.max_data_age = positive(w, "max_data_age", 5.0);
   p.stale_timeout = positive(w, "stale_timeout", 10.0);
   p.withdraw_speed = positive(w, "speed", 5.0);
+  if (auto d = w.optionalChild("distance")) p.withdraw_distance = d->checkRange(d->asDouble(), 0.0, 1.0);
   if (auto m = w.optionalChild("workspace_margin")) p.withdraw_workspace_margin = m->checkRange(m->asDouble(), 0.0, 0.5);
   if (auto f = w.optionalChild("take_back_force")) p.take_back_force = f->checkRange(f->asDouble(), 0.0, 200.0);
   w.finish();

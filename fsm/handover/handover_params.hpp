@@ -109,7 +109,9 @@ struct HandoverParams {
   // perception and withdrawal
   double max_data_age = 0.1;         ///< s, older samples are not used to start an approach
   double stale_timeout = 0.5;        ///< s without a sample during an approach = the person withdrew
-  double withdraw_speed = 0.3;       ///< m/s away from workspace.center = the person withdrew
+  double withdraw_speed = 0.3;       ///< m/s away from workspace.center (or toward home) = leaving
+  /// m a leaving motion must carry the body for a withdrawal (WithdrawalWatch; 0: any)
+  double withdraw_distance = 0.0;
   /// m: the workspace grows by this for the withdrawal test (not for the offer): a hand resting
   /// on the region's edge went out and in with every noisy sample, withdrawn and offered again
   double withdraw_workspace_margin = 0.0;

@@ -20,20 +20,29 @@ bool inWorkspace(const HandoverContext& ctx, bool hand, double margin) {
   return !hand && fresh(ctx.in.hand, p.max_data_age) && p.workspace.contains(at(ctx.in.hand), margin);
 }
 
+bool headingHome(const HandoverContext& ctx, bool hand) {
+  // heading there, not only drifting that way: a person who moves the hand on to where they
+  // settle was taken for one who withdraws
+  if (!(hand ? ctx.home_hand_known : ctx.home_object_known)) return false;
+  const SensedBody& body = hand ? ctx.in.hand : ctx.in.object;
+  const double toward = speedToward(hand ? ctx.home_hand : ctx.home_object, body);
+  constexpr double kHeading = 0.866;  // cos 30 deg
+  return toward > ctx.params->withdraw_speed && toward >= kHeading * body.velocity.head<3>().norm();
+}
+
+bool leaving(const HandoverContext& ctx, bool hand) {
+  const SensedBody& body = hand ? ctx.in.hand : ctx.in.object;
+  // or heading back to where it rested before the reach, away from the workspace centre or not
+  return -speedToward(ctx.params->workspace.center, body) > ctx.params->withdraw_speed || headingHome(ctx, hand);
+}
+
 bool withdrawn(const HandoverContext& ctx, bool hand) {
   const HandoverParams& p = *ctx.params;
   const SensedBody& body = hand ? ctx.in.hand : ctx.in.object;
   if (body.age > p.stale_timeout) return true;
   if (!body.valid) return false;  // a short dropout: keep the last decision
   if (!inWorkspace(ctx, hand, p.withdraw_workspace_margin)) return true;
-  if (-speedToward(p.workspace.center, body) > p.withdraw_speed) return true;
-  // or heading back to where it rested before the reach, away from the
-  // workspace centre or not; heading there, not only drifting that way: a
-  // person who moves the hand on to where they settle was taken for one who withdraws
-  if (!(hand ? ctx.home_hand_known : ctx.home_object_known)) return false;
-  const double toward = speedToward(hand ? ctx.home_hand : ctx.home_object, body);
-  constexpr double kHeading = 0.866;  // cos 30 deg
-  return toward > p.withdraw_speed && toward >= kHeading * body.velocity.head<3>().norm();
+  return leaving(ctx, hand);
 }
 
 bool pulledBack(const HandoverContext& ctx, double force, double hand_speed) {

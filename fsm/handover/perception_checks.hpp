@@ -17,14 +17,22 @@ bool fresh(const SensedBody& body, double max_age);
 /// hold out reaches beyond it by up to its own size. `margin` (m) grows the
 /// region (Workspace::contains).
 bool inWorkspace(const HandoverContext& ctx, bool hand, double margin = 0.0);
-/// The person withdrew the receiver's hand (`hand`) or the offered object:
-/// stale for longer than stale_timeout, outside the workspace grown by
-/// withdraw_workspace_margin (inWorkspace: a hysteresis band against the
-/// sensor's noise at the region's edge), or moving
-/// away from it faster than withdraw_speed, or
-/// heading back (within 30 degrees) toward where it rested before the reach
-/// (HandoverContext::home_*) that fast: a hand resting beside the meeting
-/// point goes back along the robot's reach more than away from it.
+/// The receiver's hand (`hand`) or the offered object moves away from the
+/// workspace centre faster than withdraw_speed, or heads back (within 30
+/// degrees) toward where it rested before the reach (HandoverContext::home_*)
+/// that fast: a hand resting beside the meeting point goes back along the
+/// robot's reach more than away from it.
+bool leaving(const HandoverContext& ctx, bool hand);
+/// The heading-home half of leaving(): toward HandoverContext::home_* faster
+/// than withdraw_speed, within 30 degrees.
+bool headingHome(const HandoverContext& ctx, bool hand);
+/// The person withdrew the receiver's hand (`hand`) or the offered object,
+/// judged on this sample alone: stale for longer than stale_timeout, outside
+/// the workspace grown by withdraw_workspace_margin (inWorkspace: a
+/// hysteresis band against the sensor's noise at the region's edge), or
+/// leaving(). For the fingers closing on an object (Grasp): there any motion
+/// away counts. Elsewhere WithdrawalWatch (withdrawal_watch.hpp) asks for
+/// the motion to carry the body away.
 bool withdrawn(const HandoverContext& ctx, bool hand);
 /// The person pulls the object they share with the robot back where they
 /// brought it from: the wrist feels more than `force` (N) beyond the object's

@@ -91,6 +91,7 @@ void Present::configure(const YamlReader& def) {
 
 void Present::onStart(HandoverContext& ctx) {
   rest_.reset();
+  withdrawal_.restart();
   pull_since_ = -1.0;
   last_time_ = ctx.time;
   ctx.force_holding = ctx.force;  // the object's and hand's weight, as carried in
@@ -115,7 +116,7 @@ bool Present::onRun(HandoverContext& ctx) {
   } else {
     pull_since_ = -1.0;
   }
-  if (withdrawn(ctx, true)) {
+  if (withdrawal_.withdrawn(ctx, true)) {
     setOutput(withdrawn_);
     return true;
   }

@@ -6,6 +6,7 @@
 #include "fsm/handover/held_object_goal.hpp"
 #include "fsm/handover/receiver_take.hpp"
 #include "fsm/handover/rest_window.hpp"
+#include "fsm/handover/withdrawal_watch.hpp"
 
 namespace handover::fsm {
 
@@ -68,6 +69,7 @@ class Present : public HandoverState {
   double lift_speed_ = 0.4;                         ///< m/s (presentation_descent.hpp)
   double pull_since_ = -1.0, last_time_ = 0.0;
   RestWindow rest_;  ///< the receiver's hand at rest (settle window)
+  WithdrawalWatch withdrawal_;  ///< the receiver leaves: Withdrawn
 };
 
 /// [Pulled] Holds the TCP still and records the filtered force (object and

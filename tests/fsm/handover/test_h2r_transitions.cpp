@@ -283,6 +283,52 @@ TEST(HandoverH2R, WithdrawDuringApproachRetreatsAndRetries) {
   EXPECT_EQ(rig.fsm->stats().retries, 1);
 }
 
+// A person who shifts the offered object a few centimetres, fast and away
+// from the robot, still offers it: only a motion that carries it
+// withdraw.distance away is a withdrawal (fsm/handover/withdrawal_watch.hpp).
+// Read off the speed alone, the shift sent the robot back (seed 631: 3 s lost
+// in most `moving` takes).
+TEST(HandoverH2R, AFastShortShiftOfTheOfferIsNoWithdrawal) {
+  Rig rig;
+  const HandoverParams& p = rig.fsm->params();
+  ASSERT_GT(p.withdraw_distance, 0.08);
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  const Vector3 away = (kMeet - p.workspace.center).normalized();
+  rig.world.moveHand(kMeet + 0.08 * away, 2.0 * p.withdraw_speed);  // 8 cm straight away, twice withdraw.speed
+  rig.runFor(0.5);
+  EXPECT_EQ(rig.fsm->stats().aborts, 0) << rig.fsm->activePath();
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Approach") || Rig::endsWith(rig.fsm->activePath(), "Grasp"))
+      << rig.fsm->activePath();
+  rig.world.moveHand(kAway, 0.8);  // and then away for good
+  ASSERT_TRUE(rig.runUntilState("Retreat", 2.0)) << rig.fsm->activePath();
+  EXPECT_EQ(rig.fsm->stats().aborts, 1);
+}
+
+// Brought in from beside the table, an object crosses the robot's front more
+// than it comes nearer the shoulder (slower than approach_speed that way): an
+// object carried carried_in_distance from where it was first seen, within
+// reach and not away from the robot, is offered while it still moves, not
+// only once it rests (seed 631: the arm was 0.5 m away when it came to rest).
+TEST(HandoverH2R, AnObjectCarriedInAcrossTheRobotsFrontIsOfferedBeforeItRests) {
+  const double carried_in = shippedWaitForOffer()["carried_in_distance"].as<double>();
+  const double approach_speed = shippedWaitForOffer()["approach_speed"].as<double>();
+  Rig rig;
+  const Vector3 center = rig.fsm->params().workspace.center;
+  const Vector3 home = center + Vector3(0.30, 0.50, 0.0), goal = center + Vector3(0.50, 0.25, 0.0);
+  rig.world.hand = rig.world.hand_goal = home;
+  rig.world.object = home + rig.world.object_in_hand;
+  rig.runFor(0.3);
+  const double speed = 0.25;
+  rig.world.moveHand(goal, speed);
+  // across the front: toward the shoulder slower than approach_speed all the way
+  const Vector3 dir = (goal - home).normalized();
+  EXPECT_LT(speed * dir.dot((center - home).normalized()), approach_speed);
+  ASSERT_TRUE(rig.runUntilState("Approach", (goal - home).norm() / speed)) << rig.fsm->activePath();
+  EXPECT_GT((rig.world.hand - home).norm(), carried_in - 0.02);  // carried in, not a twitch at home
+  EXPECT_GT((rig.world.hand_goal - rig.world.hand).norm(), 0.05);  // still on its way
+}
+
 // Withdrawing is going back to where the hand rested, whichever way that
 // lies from the robot: a hand resting beside the meeting point and going
 // back there moves along the robot's reach more than away from it (below
@@ -323,7 +369,7 @@ TEST(HandoverH2R, StaleDataDuringApproachCountsAsWithdrawal) {
   rig.world.moveHand(kMeet, 0.5);
   ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
   rig.world.dropout = true;
-  rig.runFor(0.4);  // shorter than stale_timeout: keep going
+  rig.runFor(rig.fsm->params().stale_timeout - 0.1);  // shorter than stale_timeout: keep going
   EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Approach") || Rig::endsWith(rig.fsm->activePath(), "Grasp"));
   ASSERT_TRUE(rig.runUntilState("Retreat", 0.5));
   EXPECT_EQ(rig.fsm->stats().aborts, 1);

@@ -1,0 +1,28 @@
+#include "fsm/handover/withdrawal_watch.hpp"
+
+#include "fsm/handover/perception_checks.hpp"
+
+namespace handover::fsm {
+
+bool WithdrawalWatch::withdrawn(const HandoverContext& ctx, bool hand) {
+  const HandoverParams& p = *ctx.params;
+  const SensedBody& body = hand ? ctx.in.hand : ctx.in.object;
+  if (body.age > p.stale_timeout) return true;
+  if (!body.valid) return false;  // a short dropout: the motion, if any, goes on
+  if (!inWorkspace(ctx, hand, p.withdraw_workspace_margin)) return true;
+  if (!leaving(ctx, hand)) {
+    leaving_ = false;
+    return false;
+  }
+  const Vector3 at = body.pose.translation();
+  if (!leaving_) {
+    leaving_ = true;
+    from_ = at;
+  }
+  if ((at - from_).norm() >= p.withdraw_distance) return true;
+  // or heading home and nearly there: a reach taken back early is short
+  const Vector3& home = hand ? ctx.home_hand : ctx.home_object;
+  return headingHome(ctx, hand) && (at - home).norm() <= p.withdraw_distance;
+}
+
+}  // namespace handover::fsm
