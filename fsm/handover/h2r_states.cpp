@@ -157,12 +157,17 @@ void Approach::configure(const YamlReader& def) {
     lift_speed_ = readPositive(def, "lift_speed", 2.0);
   }
   if (def.has("pull_hold_time") && !hand_) def.child("pull_hold_time").fail("only an approach to the hand (a give) is taken from");
+  if (def.has("yield_force")) {
+    if (hand_) def.child("yield_force").fail("only an approach to the object (a take) has an empty gripper to feel a strike");
+    yield_force_ = readRange(def, "yield_force", 1.0, 500.0);
+  }
   if (take_.configure(def)) pulled_ = declareOutput("Pulled");
   stall_.configure(def);
 }
 
 void Approach::onStart(HandoverContext& ctx) {
   blind_ = false;
+  struck_ = false;
   withdrawal_.restart();
   take_.restart();
   stall_.restart(ctx.time);
@@ -230,7 +235,12 @@ bool Approach::onRun(HandoverContext& ctx) {
     if (hand_ && lift_ > 0.0) followDescent(ctx, ctrl(), lift_, lift_speed_, dt);
     // the gains follow the tracked target's speed: a take's target (where the reach ends) stands
     // still once it is known; a give's is the receiver's hand itself
-    const double speed = (hand_ ? body.velocity : ctx.in.target_velocity).head<3>().norm();
+    // struck: the empty gripper pushed harder than yield_force (the object or the hand is not where
+    // the sensor says; a tracker 10 cm low): the rest of the approach at the soft follow gains. At
+    // the stiff arrive gains the arm pressed on with 100 N and the strike spun joint 6 past its limits
+    if (yield_force_ > 0.0 && ctx.in.tool_contact.head<3>().norm() > yield_force_) struck_ = true;
+    const double speed = struck_ ? std::max(ctx.params->arrive_speed, 1.0)
+                                 : (hand_ ? body.velocity : ctx.in.target_velocity).head<3>().norm();
     setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow, speed);
     stall_.watch(ctx, ctrl(), hand_, positionError(ctx.in.tcp_pose, ctx.in.target_pose), arrived && plan.valid);
   }

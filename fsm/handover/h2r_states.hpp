@@ -86,6 +86,10 @@ class WaitForPerson : public HandoverState {
 /// funnel_margin (share of the clearance, 0..1);
 /// a give's lift (m, optional, default 0: none) with lift_speed (m/s): the
 /// presentation is approached from above the receiver's hand;
+/// a take's yield_force (N, optional, default 0: off): the empty gripper
+/// pushed harder than that has struck something (the object or the hand is
+/// not where the sensor says): the rest of the approach tracks at the soft
+/// follow gains, not the stiff arrive gains that pressed on into it;
 /// stall_time (s, optional): an approach to a target at rest that makes no
 /// progress for that long with a joint at its limit goes on in joint space
 /// to the planner's configuration (stall_recovery.hpp)
@@ -114,6 +118,8 @@ class Approach : public HandoverState {
   double lift_speed_ = 0.4;         ///< m/s, fastest change of the lift
   double last_time_ = 0.0;          ///< s, the last cycle (the lift's rate)
   bool blind_ = false;              ///< holding: the tracked body's data is stale
+  double yield_force_ = 0.0;        ///< N on the empty gripper that is a strike (0: off)
+  bool struck_ = false;             ///< struck: the follow gains for the rest of the approach
   GraspFunnel funnel_;              ///< a take's continuous approach; max_standoff 0: none
 };
 

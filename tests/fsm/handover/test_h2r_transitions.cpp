@@ -423,6 +423,37 @@ TEST(HandoverH2R, ApproachStiffensAsTheObjectArrives) {
   }
 }
 
+// The empty gripper pushed harder than the take's Approach yield_force has
+// struck something (the object or the hand is not where the sensor says: a
+// tracker 10 cm low): the rest of the approach tracks at the soft follow
+// gains. At the stiff arrive gains the arm pressed on into it with 100 N and
+// spun joint 6 past its limits (LimitFaultsEndToEnd).
+TEST(HandoverH2R, AStruckGripperApproachesOnAtTheSoftGains) {
+  const double yield = YAML::LoadFile(HandoverFsm::defaultConfigPath())["machine"]["states"]["Handover"]["states"]
+                                     ["HumanToRobot"]["states"]["Approach"]["yield_force"]
+                                         .as<double>();
+  Rig rig;
+  const HandoverParams& p = rig.fsm->params();
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  rig.world.arm_stuck = true;  // held off the object: the approach goes on
+  ASSERT_TRUE(rig.runUntil([&] { return rig.world.hand_vel.norm() == 0.0; }, 5.0));
+  rig.runFor(0.3);
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Approach")) << rig.fsm->activePath();
+  EXPECT_NEAR(rig.ctl.gains_translation, p.arrive_tracking_translation_stiffness, 0.5);
+  rig.world.tool_contact.head<3>() = Vector3(0.0, 0.8 * yield, 0.0);  // a touch below it: stiff on
+  rig.runFor(0.05);
+  EXPECT_NEAR(rig.ctl.gains_translation, p.arrive_tracking_translation_stiffness, 0.5);
+  rig.world.tool_contact.head<3>() = Vector3(0.0, 1.2 * yield, 0.0);  // a strike
+  rig.runFor(0.05);
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Approach")) << rig.fsm->activePath();
+  EXPECT_NEAR(rig.ctl.gains_translation, p.tracking_translation_stiffness, 1e-9);
+  EXPECT_NEAR(rig.ctl.gains_orientation, p.tracking_orientation_stiffness, 1e-9);
+  rig.world.tool_contact.setZero();  // it let go of it: still soft, for the rest of the approach
+  rig.runFor(0.2);
+  EXPECT_NEAR(rig.ctl.gains_translation, p.tracking_translation_stiffness, 1e-9);
+}
+
 // A continuous approach: once the object has arrived and lies between the open
 // fingers' planes, the pre-grasp standoff shrinks during Approach already
 // (the fingers slide in as the alignment converges, no stop at the pre-grasp
