@@ -237,7 +237,7 @@ bool Approach::onRun(HandoverContext& ctx) {
     // still once it is known; a give's is the receiver's hand itself
     // struck: the empty gripper pushed harder than yield_force (the object or the hand is not where
     // the sensor says; a tracker 10 cm low): the rest of the approach at the soft follow gains. At
-    // the stiff arrive gains the arm pressed on with 100 N and the strike spun joint 6 past its limits
+    // arrive gains of 150 (tried) the arm pressed on with 100 N and spun joint 6 past its limits
     if (yield_force_ > 0.0 && ctx.in.tool_contact.head<3>().norm() > yield_force_) struck_ = true;
     const double speed = struck_ ? std::max(ctx.params->arrive_speed, 1.0)
                                  : (hand_ ? body.velocity : ctx.in.target_velocity).head<3>().norm();

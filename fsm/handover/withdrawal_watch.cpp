@@ -10,7 +10,12 @@ bool WithdrawalWatch::withdrawn(const HandoverContext& ctx, bool hand) {
   if (body.age > p.stale_timeout) return true;
   if (!body.valid) return false;  // a short dropout: the motion, if any, goes on
   if (!inWorkspace(ctx, hand, p.withdraw_workspace_margin)) return true;
-  if (!leaving(ctx, hand)) {
+  // a reach still under way that ends far out goes away from the workspace centre too: until the
+  // body has come to rest once, only a way back home is leaving (offered while it still moved, a
+  // reach toward the arm's far edge was taken for a withdrawal, three times until the take
+  // aborted: g643_00164)
+  if (body.velocity.head<3>().norm() <= p.arrive_speed) arrived_ = true;
+  if (!(arrived_ ? leaving(ctx, hand) : headingHome(ctx, hand))) {
     leaving_ = false;
     return false;
   }

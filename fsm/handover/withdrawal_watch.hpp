@@ -22,11 +22,13 @@ namespace handover::fsm {
 class WithdrawalWatch {
  public:
   /// Forgets a motion under way (the state starts).
-  void restart() { leaving_ = false; }
+  void restart() { leaving_ = arrived_ = false; }
   /// The person withdrew the receiver's hand (`hand`) or the offered object:
   /// perception stale for longer than params.stale_timeout, the body outside
   /// the workspace grown by params.withdraw_workspace_margin, or leaving
-  /// (leaving(): moving away or heading home faster than withdraw_speed)
+  /// (leaving(): moving away or heading home faster than withdraw_speed;
+  /// only heading home until the body has once been slower than
+  /// params.arrive_speed: a reach under way may end far out)
   /// without a pause since it has come params.withdraw_distance (straight
   /// line) from where that motion began, or, heading home, it is within that
   /// distance of home (a reach taken back early is short). A short dropout
@@ -35,6 +37,7 @@ class WithdrawalWatch {
 
  private:
   bool leaving_ = false;               ///< a leaving motion is under way
+  bool arrived_ = false;               ///< the body has been slower than params.arrive_speed since restart()
   Vector3 from_ = Vector3::Zero();     ///< m, world: where it began
 };
 

@@ -305,6 +305,33 @@ TEST(HandoverH2R, AFastShortShiftOfTheOfferIsNoWithdrawal) {
   EXPECT_EQ(rig.fsm->stats().aborts, 1);
 }
 
+// A reach still under way may end far out, away from the workspace centre:
+// until the object has come to rest once, only a way back home is leaving
+// (offered while it still moved, a reach toward the arm's far edge was taken
+// for a withdrawal three times until the take aborted: g643_00164). Once it
+// rested, going away is leaving again.
+TEST(HandoverH2R, AReachThatBendsAwayFromTheRobotIsNoWithdrawalUntilItRested) {
+  Rig rig;
+  const HandoverParams& p = rig.fsm->params();
+  const Vector3 home = rig.world.hand;
+  rig.world.arm_stuck = true;  // the approach goes on (no grasp)
+  rig.world.moveHand(kMeet, 0.8);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  ASSERT_TRUE(rig.runUntil([&] { return (rig.world.hand - kMeet).norm() < 0.05; }, 2.0));
+  ASSERT_GT(rig.world.hand_vel.norm(), p.arrive_speed);  // on its way still
+  const Vector3 far = rig.world.hand + 0.25 * Vector3(0.6, -0.6, 0.5).normalized();  // on out, up and aside
+  const Vector3 dir = (far - rig.world.hand).normalized();
+  const double speed = 0.8;
+  EXPECT_GT(-speed * dir.dot((p.workspace.center - rig.world.hand).normalized()), p.withdraw_speed);
+  EXPECT_LT(dir.dot((home - rig.world.hand).normalized()), 0.866);  // not home-bound
+  rig.world.moveHand(far, speed);
+  ASSERT_TRUE(rig.runUntil([&] { return rig.world.hand_vel.norm() == 0.0; }, 2.0));
+  rig.runFor(0.3);
+  EXPECT_EQ(rig.fsm->stats().aborts, 0) << rig.fsm->activePath();
+  rig.world.moveHand(far + 0.3 * (far - p.workspace.center).normalized(), speed);  // rested: now away is leaving
+  ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->stats().aborts == 1; }, 2.0)) << rig.fsm->activePath();
+}
+
 // Brought in from beside the table, an object crosses the robot's front more
 // than it comes nearer the shoulder (slower than approach_speed that way): an
 // object carried carried_in_distance from where it was first seen, within
@@ -426,8 +453,8 @@ TEST(HandoverH2R, ApproachStiffensAsTheObjectArrives) {
 // The empty gripper pushed harder than the take's Approach yield_force has
 // struck something (the object or the hand is not where the sensor says: a
 // tracker 10 cm low): the rest of the approach tracks at the soft follow
-// gains. At the stiff arrive gains the arm pressed on into it with 100 N and
-// spun joint 6 past its limits (LimitFaultsEndToEnd).
+// gains. At arrive gains of 150 / 300 (tried) the arm pressed on into it with
+// 100 N and spun joint 6 past its limits (LimitFaultsEndToEnd).
 TEST(HandoverH2R, AStruckGripperApproachesOnAtTheSoftGains) {
   const double yield = YAML::LoadFile(HandoverFsm::defaultConfigPath())["machine"]["states"]["Handover"]["states"]
                                      ["HumanToRobot"]["states"]["Approach"]["yield_force"]
