@@ -239,9 +239,11 @@ bool Approach::onRun(HandoverContext& ctx) {
     // the sensor says; a tracker 10 cm low): the rest of the approach at the soft follow gains. At
     // arrive gains of 150 (tried) the arm pressed on with 100 N and spun joint 6 past its limits
     if (yield_force_ > 0.0 && ctx.in.tool_contact.head<3>().norm() > yield_force_) struck_ = true;
-    const double speed = struck_ ? std::max(ctx.params->arrive_speed, 1.0)
-                                 : (hand_ ? body.velocity : ctx.in.target_velocity).head<3>().norm();
-    setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow, speed);
+    if (struck_)
+      setTrackingGains(*ctx.params, ctrl(), TrackingGains::kFollow);
+    else
+      setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow,
+                            (hand_ ? body.velocity : ctx.in.target_velocity).head<3>().norm());
     stall_.watch(ctx, ctrl(), hand_, positionError(ctx.in.tcp_pose, ctx.in.target_pose), arrived && plan.valid);
   }
   if (withdrawal_.withdrawn(ctx, hand_)) {

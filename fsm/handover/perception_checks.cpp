@@ -30,19 +30,27 @@ bool headingHome(const HandoverContext& ctx, bool hand) {
   return toward > ctx.params->withdraw_speed && toward >= kHeading * body.velocity.head<3>().norm();
 }
 
-bool leaving(const HandoverContext& ctx, bool hand) {
+bool movingAway(const HandoverContext& ctx, bool hand) {
   const SensedBody& body = hand ? ctx.in.hand : ctx.in.object;
-  // or heading back to where it rested before the reach, away from the workspace centre or not
-  return -speedToward(ctx.params->workspace.center, body) > ctx.params->withdraw_speed || headingHome(ctx, hand);
+  return -speedToward(ctx.params->workspace.center, body) > ctx.params->withdraw_speed;
 }
 
-bool withdrawn(const HandoverContext& ctx, bool hand) {
+bool leaving(const HandoverContext& ctx, bool hand) {
+  // or heading back to where it rested before the reach, away from the workspace centre or not
+  return movingAway(ctx, hand) || headingHome(ctx, hand);
+}
+
+std::optional<bool> withdrawnAtOnce(const HandoverContext& ctx, bool hand) {
   const HandoverParams& p = *ctx.params;
   const SensedBody& body = hand ? ctx.in.hand : ctx.in.object;
   if (body.age > p.stale_timeout) return true;
   if (!body.valid) return false;  // a short dropout: keep the last decision
   if (!inWorkspace(ctx, hand, p.withdraw_workspace_margin)) return true;
-  return leaving(ctx, hand);
+  return std::nullopt;
+}
+
+bool withdrawn(const HandoverContext& ctx, bool hand) {
+  return withdrawnAtOnce(ctx, hand).value_or(leaving(ctx, hand));
 }
 
 bool pulledBack(const HandoverContext& ctx, double force, double hand_speed) {

@@ -1,6 +1,8 @@
 // Small geometric tests the handover states share. All RT safe.
 #pragma once
 
+#include <optional>
+
 #include "fsm/handover/handover_context.hpp"
 
 namespace handover::fsm {
@@ -23,14 +25,18 @@ bool inWorkspace(const HandoverContext& ctx, bool hand, double margin = 0.0);
 /// that fast: a hand resting beside the meeting point goes back along the
 /// robot's reach more than away from it.
 bool leaving(const HandoverContext& ctx, bool hand);
-/// The heading-home half of leaving(): toward HandoverContext::home_* faster
-/// than withdraw_speed, within 30 degrees.
+/// The halves of leaving(): away from the workspace centre faster than
+/// withdraw_speed; toward HandoverContext::home_* that fast, within 30 degrees.
+bool movingAway(const HandoverContext& ctx, bool hand);
 bool headingHome(const HandoverContext& ctx, bool hand);
+/// What tells a withdrawal without the motion: true when perception has been
+/// stale for longer than stale_timeout or the body is outside the workspace
+/// grown by withdraw_workspace_margin (inWorkspace: a hysteresis band against
+/// the sensor's noise at the region's edge); false during a short dropout
+/// (keep the last decision); empty: the motion decides.
+std::optional<bool> withdrawnAtOnce(const HandoverContext& ctx, bool hand);
 /// The person withdrew the receiver's hand (`hand`) or the offered object,
-/// judged on this sample alone: stale for longer than stale_timeout, outside
-/// the workspace grown by withdraw_workspace_margin (inWorkspace: a
-/// hysteresis band against the sensor's noise at the region's edge), or
-/// leaving(). For the fingers closing on an object (Grasp): there any motion
+/// judged on this sample alone: withdrawnAtOnce(), else leaving(). For the fingers closing on an object (Grasp): there any motion
 /// away counts. Elsewhere WithdrawalWatch (withdrawal_watch.hpp) asks for
 /// the motion to carry the body away.
 bool withdrawn(const HandoverContext& ctx, bool hand);

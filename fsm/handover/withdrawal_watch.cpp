@@ -5,17 +5,16 @@
 namespace handover::fsm {
 
 bool WithdrawalWatch::withdrawn(const HandoverContext& ctx, bool hand) {
+  if (const std::optional<bool> at_once = withdrawnAtOnce(ctx, hand)) return *at_once;
   const HandoverParams& p = *ctx.params;
   const SensedBody& body = hand ? ctx.in.hand : ctx.in.object;
-  if (body.age > p.stale_timeout) return true;
-  if (!body.valid) return false;  // a short dropout: the motion, if any, goes on
-  if (!inWorkspace(ctx, hand, p.withdraw_workspace_margin)) return true;
   // a reach still under way that ends far out goes away from the workspace centre too: until the
   // body has come to rest once, only a way back home is leaving (offered while it still moved, a
   // reach toward the arm's far edge was taken for a withdrawal, three times until the take
   // aborted: g643_00164)
   if (body.velocity.head<3>().norm() <= p.arrive_speed) arrived_ = true;
-  if (!(arrived_ ? leaving(ctx, hand) : headingHome(ctx, hand))) {
+  const bool home_bound = headingHome(ctx, hand);
+  if (!home_bound && !(arrived_ && movingAway(ctx, hand))) {
     leaving_ = false;
     return false;
   }
@@ -24,10 +23,9 @@ bool WithdrawalWatch::withdrawn(const HandoverContext& ctx, bool hand) {
     leaving_ = true;
     from_ = at;
   }
-  if ((at - from_).norm() >= p.withdraw_distance) return true;
-  // or heading home and nearly there: a reach taken back early is short
+  // carried away far enough, or heading home and nearly there (a reach taken back early is short)
   const Vector3& home = hand ? ctx.home_hand : ctx.home_object;
-  return headingHome(ctx, hand) && (at - home).norm() <= p.withdraw_distance;
+  return (at - from_).norm() >= p.withdraw_distance || (home_bound && (at - home).norm() <= p.withdraw_distance);
 }
 
 }  // namespace handover::fsm
