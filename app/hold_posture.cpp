@@ -11,6 +11,7 @@
 #include "perception/pose_source.hpp"
 #include "runtime/handover_cycle.hpp"
 #include "scenes/sim/simulation.hpp"
+#include "config/config_directory.hpp"
 
 namespace handover::app {
 
@@ -30,7 +31,7 @@ HoldSummary holdPosture(const HoldOptions& options) {
   // URDF unless --urdf names another (with the description's names)
   runtime::CycleSettings cs = runtime::defaultCycleSettings();
   if (!options.urdf.empty()) cs.robot.urdf = options.urdf;
-  cs.fsm_config_path = std::string(HANDOVER_SOURCE_DIR) + "/config/fsm_hold.yaml";
+  cs.fsm_config_path = configFile("fsm_hold.yaml");
   runtime::HandoverCycle cycle(cs);
   const control::Model& model = cycle.controller().model();
   control::Data data(model);  // the judge's own forward kinematics

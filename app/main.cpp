@@ -24,6 +24,7 @@
 #include "app/report/output_files.hpp"
 #include "app/run/run_scenario.hpp"
 #include "app/validate/scenario_validation.hpp"
+#include "config/config_directory.hpp"
 #include "config/input_error.hpp"
 #include "scenes/scenario/scenario_parser.hpp"
 
@@ -161,6 +162,10 @@ int mergeCommand(const std::vector<std::string>& dirs, const std::string& out) {
 int main(int argc, char** argv) {
   CLI::App cli{"Handover: a task-space QP controller that takes objects from and gives objects to a person"};
   cli.require_subcommand(1);
+  std::string config_dir;
+  cli.add_option("--config-dir", config_dir,
+                 "read the configuration (controller.yaml, fsm.yaml, ...) from this folder instead of the "
+                 "source tree's config/: a tuned copy, compared without rebuilding");
 
   // run
   std::string run_file, run_out, run_video, run_tracker;
@@ -275,6 +280,7 @@ int main(int argc, char** argv) {
   }
 
   try {
+    if (!config_dir.empty()) setConfigDirectory(config_dir);
     if (run_cmd->parsed()) return runCommand(run_file, run_out, run_video, run_view, run_quiet, log_every, run_tracker);
     if (batch_cmd->parsed()) {
       batch.progress = !batch_quiet;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "control/controller_config_bounds.hpp"
+#include "config/config_directory.hpp"
 
 namespace handover::control {
 
@@ -203,6 +204,6 @@ ControllerConfig loadControllerConfig(const std::string& path) {
   return parseControllerConfig(YamlReader::loadFile(path));
 }
 
-std::string defaultControllerConfigPath() { return std::string(HANDOVER_SOURCE_DIR) + "/config/controller.yaml"; }
+std::string defaultControllerConfigPath() { return configFile("controller.yaml"); }
 
 }  // namespace handover::control

@@ -1,4 +1,5 @@
 #include "perception/perception_config.hpp"
+#include "config/config_directory.hpp"
 
 #include <cmath>
 
@@ -96,6 +97,6 @@ PerceptionConfig loadPerceptionConfig(const std::string& path) {
   return parsePerceptionConfig(YamlReader::loadFile(path));
 }
 
-std::string defaultPerceptionConfigPath() { return std::string(HANDOVER_SOURCE_DIR) + "/config/perception.yaml"; }
+std::string defaultPerceptionConfigPath() { return configFile("perception.yaml"); }
 
 }  // namespace handover::perception

@@ -8,6 +8,7 @@
 #include "fsm/handover/handover_params.hpp"
 #include "perception/perception_config.hpp"
 #include "runtime/collision_queries.hpp"
+#include "config/config_directory.hpp"
 
 namespace handover::runtime {
 
@@ -44,8 +45,7 @@ CycleSettings defaultCycleSettings() {
   s.estimator = p.estimator;  // staleness, motion model, prediction, gates
   s.target.blend_time = p.blend_time;
   s.reach_prediction = p.reach;
-  s.grasp_selection = control::grasp::loadGraspSelectionConfig(std::string(HANDOVER_SOURCE_DIR) +
-                                                               "/config/grasp_selection.yaml");
+  s.grasp_selection = control::grasp::loadGraspSelectionConfig(configFile("grasp_selection.yaml"));
   return s;
 }
 

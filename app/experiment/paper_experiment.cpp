@@ -24,6 +24,7 @@
 #include "scenes/human/human_facts.hpp"
 #include "scenes/human/scripted_human.hpp"
 #include "scenes/sim/simulation.hpp"
+#include "config/config_directory.hpp"
 
 namespace handover::app {
 
@@ -120,7 +121,7 @@ ExperimentRun runPaperExperiment(const scenario::Scenario& sc, ReachController w
     cs.controller.pose_task.translation.gains = k_trans;
     cs.controller.pose_task.orientation.gains = k_rot;
   }
-  cs.fsm_config_path = sourcePath(method ? "config/fsm_reach.yaml" : "config/fsm_reach_baseline.yaml");
+  cs.fsm_config_path = configFile(method ? "fsm_reach.yaml" : "fsm_reach_baseline.yaml");
   cs.fsm_config = std::make_shared<const YAML::Node>(reachTable(cs.fsm_config_path, opt.standoff));
   cs.estimator.hand_T_object = *sc.human.holds_object;
   cs.object.mass = sc.object.mass;

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "config/yaml_reader.hpp"
+#include "config/config_directory.hpp"
 
 namespace handover::control {
 
@@ -28,7 +29,7 @@ bool globMatch(const std::string& pattern, const std::string& name) {
   return p == pattern.size();
 }
 
-std::string defaultCollisionConfigPath() { return std::string(HANDOVER_SOURCE_DIR) + "/config/collision.yaml"; }
+std::string defaultCollisionConfigPath() { return configFile("collision.yaml"); }
 
 namespace {
 

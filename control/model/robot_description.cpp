@@ -1,6 +1,7 @@
 #include "control/model/robot_description.hpp"
 
 #include "config/yaml_reader.hpp"
+#include "config/config_directory.hpp"
 
 namespace handover::control {
 
@@ -75,7 +76,7 @@ RobotDescription loadRobotDescription(const std::string& path) {
 }
 
 std::string defaultRobotDescriptionPath() {
-  return std::string(HANDOVER_SOURCE_DIR) + "/config/robot.yaml";
+  return configFile("robot.yaml");
 }
 
 RobotDescription defaultRobotDescription() { return loadRobotDescription(defaultRobotDescriptionPath()); }

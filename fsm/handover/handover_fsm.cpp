@@ -12,6 +12,7 @@
 #include "fsm/handover/r2h_states.hpp"
 #include "fsm/handover/reach_states.hpp"
 #include "fsm/handover/safety.hpp"
+#include "config/config_directory.hpp"
 
 namespace handover::fsm {
 
@@ -74,7 +75,7 @@ std::unique_ptr<HandoverFsm> HandoverFsm::fromFile(const std::string& path, Cont
   return std::make_unique<HandoverFsm>(YamlReader::loadFile(path), controller, object);
 }
 
-std::string HandoverFsm::defaultConfigPath() { return std::string(HANDOVER_SOURCE_DIR) + "/config/fsm.yaml"; }
+std::string HandoverFsm::defaultConfigPath() { return configFile("fsm.yaml"); }
 
 bool HandoverFsm::done() const { return std::string_view(ctx_.stats.outcome) != "running"; }
 

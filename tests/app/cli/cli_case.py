@@ -93,6 +93,9 @@ def main():
     p.add_argument("--duration", help="derived scenario: duration")
     p.add_argument("--name", help="derived scenario: name")
     p.add_argument("--expect", action="append", default=[], help="derived scenario: an expect line, 'key: value'")
+    p.add_argument("--copy-config", metavar="DST", help="copy the source tree's config/ to DST first")
+    p.add_argument("--config-edit", nargs=3, action="append", default=[], metavar=("FILE", "OLD", "NEW"),
+                   help="in the copy's FILE, replace the text OLD (which must be there) by NEW (repeatable)")
     p.add_argument("--video", help="an MP4 to check with ffprobe after the run")
     p.add_argument("--ffprobe", default="ffprobe")
     p.add_argument("--min-frames", type=int, default=10)
@@ -108,6 +111,20 @@ def main():
             os.remove(c)
     if a.derive:
         derive_scenario(a.derive[0], a.derive[1], a.duration, a.expect, a.name)
+    if a.copy_config:
+        if os.path.isdir(a.copy_config):
+            shutil.rmtree(a.copy_config)
+        shutil.copytree(os.path.join(a.source_dir, "config"), a.copy_config)
+    for name, old, new in a.config_edit:
+        if not a.copy_config:
+            fail("--config-edit needs --copy-config")
+        path = os.path.join(a.copy_config, name)
+        with open(path) as f:
+            text = f.read()
+        if old not in text:
+            fail("%s has no %r to replace" % (path, old))
+        with open(path, "w") as f:
+            f.write(text.replace(old, new, 1))
 
     shipped = sorted(glob.glob(os.path.join(a.source_dir, "scenes", "scenarios", "*.yaml")))
     cmd = [a.exe]
