@@ -1,5 +1,7 @@
 #include "control/model/robot_description.hpp"
 
+#include <filesystem>
+
 #include "config/yaml_reader.hpp"
 #include "config/config_directory.hpp"
 
@@ -35,7 +37,13 @@ RobotDescription loadRobotDescription(const std::string& path) {
   RobotDescription d;
   d.file = path;
   d.urdf = nonEmpty(root, "urdf");
-  if (d.urdf.front() != '/') d.urdf = folderOf(path) + d.urdf;
+  if (d.urdf.front() != '/') {
+    // relative to this file; a copy of config/ elsewhere (--config-dir) still means the
+    // shipped scenes/, relative to the source tree's config/ then
+    const std::string near = folderOf(path) + d.urdf;
+    const std::string shipped = std::string(HANDOVER_SOURCE_DIR) + "/config/" + d.urdf;
+    d.urdf = !std::filesystem::exists(near) && std::filesystem::exists(shipped) ? shipped : near;
+  }
   d.base_link = nonEmpty(root, "base_link");
   const YamlReader frames = root.child("frames");
   d.hand_link = nonEmpty(frames, "hand");
