@@ -38,8 +38,8 @@ RobotDescription loadRobotDescription(const std::string& path) {
   d.file = path;
   d.urdf = nonEmpty(root, "urdf");
   if (d.urdf.front() != '/') {
-    // relative to this file; a copy of config/ elsewhere (--config-dir) still means the
-    // shipped scenes/, relative to the source tree's config/ then
+    // relative to this file; a copy of config/ elsewhere (--config-dir) that does not
+    // hold the URDF's folder still means the shipped one, relative to the source tree's config/
     const std::string near = folderOf(path) + d.urdf;
     const std::string shipped = std::string(HANDOVER_SOURCE_DIR) + "/config/" + d.urdf;
     d.urdf = !std::filesystem::exists(near) && std::filesystem::exists(shipped) ? shipped : near;
