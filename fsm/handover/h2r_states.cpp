@@ -243,7 +243,7 @@ bool Approach::onRun(HandoverContext& ctx) {
       setTrackingGains(*ctx.params, ctrl(), TrackingGains::kFollow);
     else
       setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow,
-                            (hand_ ? body.velocity : ctx.in.target_velocity).head<3>().norm());
+                            (hand_ ? body.velocity : ctx.in.target_velocity).head<3>().norm(), !hand_);
     stall_.watch(ctx, ctrl(), hand_, positionError(ctx.in.tcp_pose, ctx.in.target_pose), arrived && plan.valid);
   }
   if (withdrawal_.withdrawn(ctx, hand_)) {

@@ -85,6 +85,12 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
       p.arrive_tracking_translation_stiffness = inRange(*arrive, "translation_stiffness", 0.0, 1000.0);
       p.arrive_tracking_orientation_stiffness = inRange(*arrive, "orientation_stiffness", 0.0, 1000.0);
       p.arrive_speed = inRange(*arrive, "speed", 0.001, 5.0);
+      if (auto take = arrive->optionalChild("take")) {
+        p.take_arrive_tracking_translation_stiffness = inRange(*take, "translation_stiffness", 0.0, 1000.0);
+        p.take_arrive_tracking_orientation_stiffness = inRange(*take, "orientation_stiffness", 0.0, 1000.0);
+        p.take_arrive_speed = take->has("speed") ? inRange(*take, "speed", 0.001, 5.0) : p.arrive_speed;
+        take->finish();
+      }
       arrive->finish();
     }
     t->finish();

@@ -54,6 +54,12 @@ struct HandoverParams {
   double arrive_tracking_translation_stiffness = 0.0;
   double arrive_tracking_orientation_stiffness = 0.0;
   double arrive_speed = 0.0;  ///< m/s
+  /// A take's own arrive gains and speed (the object at rest in the giver's
+  /// hand), where they differ from a give's (a receiver's open hand, which a
+  /// stiff gripper presses into). 0 = the arrive gains above.
+  double take_arrive_tracking_translation_stiffness = 0.0;
+  double take_arrive_tracking_orientation_stiffness = 0.0;
+  double take_arrive_speed = 0.0;  ///< m/s
   /// A take's approach goes where the person's reach will end (the object's
   /// rest pose, HandoverInput::object.rest_pose), holds its grasp choice once
   /// that is known, and starts once it lies in the workspace. Off: where the

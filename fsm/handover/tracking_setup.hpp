@@ -40,22 +40,30 @@ inline void setTrackingGains(const HandoverParams& p, ControllerHandle& ctrl, Tr
 }
 
 /// The phase gains for a tracked body moving at `speed` (m/s): at rest the
-/// phase's own stiff gains (kFollow: params.arrive_tracking_*, kAlign:
-/// params.align_tracking_*), the follow gains from params.arrive_speed on,
-/// linear between: soft while the person still brings the body in, stiff
-/// once it has arrived. Without arrive gains, the phase gains as they are.
-/// RT safe.
-inline void setPhaseGainsForSpeed(const HandoverParams& p, ControllerHandle& ctrl, TrackingGains phase, double speed) {
+/// phase's own stiff gains (kFollow: params.arrive_tracking_*, or in a `take`
+/// params.take_arrive_tracking_* where set; kAlign: params.align_tracking_*),
+/// the follow gains from the arrive speed on, linear between: soft while the
+/// person still brings the body in, stiff once it has arrived. Without
+/// arrive gains, the phase gains as they are. RT safe.
+inline void setPhaseGainsForSpeed(const HandoverParams& p, ControllerHandle& ctrl, TrackingGains phase, double speed,
+                                  bool take = false) {
   const bool align = phase == TrackingGains::kAlign && p.align_tracking_translation_stiffness > 0.0 &&
                      p.align_tracking_orientation_stiffness > 0.0;
-  const double rest_t = align ? p.align_tracking_translation_stiffness : p.arrive_tracking_translation_stiffness;
-  const double rest_o = align ? p.align_tracking_orientation_stiffness : p.arrive_tracking_orientation_stiffness;
-  if (p.arrive_speed <= 0.0 || rest_t <= 0.0 || rest_o <= 0.0 || p.tracking_translation_stiffness <= 0.0 ||
+  const bool take_own = !align && take && p.take_arrive_tracking_translation_stiffness > 0.0 &&
+                        p.take_arrive_tracking_orientation_stiffness > 0.0;
+  const double rest_t = align ? p.align_tracking_translation_stiffness
+                              : take_own ? p.take_arrive_tracking_translation_stiffness
+                                         : p.arrive_tracking_translation_stiffness;
+  const double rest_o = align ? p.align_tracking_orientation_stiffness
+                              : take_own ? p.take_arrive_tracking_orientation_stiffness
+                                         : p.arrive_tracking_orientation_stiffness;
+  const double arrive_speed = take_own ? p.take_arrive_speed : p.arrive_speed;
+  if (arrive_speed <= 0.0 || rest_t <= 0.0 || rest_o <= 0.0 || p.tracking_translation_stiffness <= 0.0 ||
       p.tracking_orientation_stiffness <= 0.0) {
     setTrackingGains(p, ctrl, phase);
     return;
   }
-  const double moving = std::clamp(speed / p.arrive_speed, 0.0, 1.0);
+  const double moving = std::clamp(speed / arrive_speed, 0.0, 1.0);
   ctrl.setTrackingStiffness(rest_t + moving * (p.tracking_translation_stiffness - rest_t),
                             rest_o + moving * (p.tracking_orientation_stiffness - rest_o),
                             align ? p.align_tracking_max_speed : 0.0);

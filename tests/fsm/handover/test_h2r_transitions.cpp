@@ -450,6 +450,46 @@ TEST(HandoverH2R, ApproachStiffensAsTheObjectArrives) {
   }
 }
 
+// A take's own arrive gains (params.tracking.arrive.take): the take's
+// Approach stiffens to them once the object rests, and eases back to the
+// follow gains from the take's own arrive speed on.
+TEST(HandoverH2R, ATakeStiffensToItsOwnArriveGains) {
+  Rig rig(false, false, io::ObjectShape{}, [](YAML::Node& doc) {
+    YAML::Node take;
+    take["translation_stiffness"] = 150.0;
+    take["orientation_stiffness"] = 300.0;
+    take["speed"] = 0.1;
+    doc["params"]["tracking"]["arrive"]["take"] = take;
+  });
+  const HandoverParams& p = rig.fsm->params();
+  ASSERT_EQ(p.take_arrive_tracking_translation_stiffness, 150.0);
+  ASSERT_EQ(p.take_arrive_tracking_orientation_stiffness, 300.0);
+  ASSERT_EQ(p.take_arrive_speed, 0.1);
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  rig.world.arm_stuck = true;  // held off the object: the approach goes on
+  ASSERT_TRUE(rig.runUntil([&] { return rig.world.hand_vel.norm() == 0.0; }, 5.0));
+  rig.runFor(0.3);  // the filtered speed settles
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Approach")) << rig.fsm->activePath();
+  EXPECT_NEAR(rig.ctl.gains_translation, 150.0, 1.5);
+  EXPECT_NEAR(rig.ctl.gains_orientation, 300.0, 3.0);
+  EXPECT_GT(rig.ctl.gains_translation, p.arrive_tracking_translation_stiffness);
+}
+
+TEST(HandoverH2R, ATakesArriveGainsAreCheckedByName) {
+  YAML::Node doc = YAML::LoadFile(HandoverFsm::defaultConfigPath());
+  doc["params"]["tracking"]["arrive"]["take"]["translation_stiffness"] = 5000.0;
+  doc["params"]["tracking"]["arrive"]["take"]["orientation_stiffness"] = 300.0;
+  RecordingController ctl;
+  try {
+    HandoverFsm fsm(YamlReader(doc, HandoverFsm::defaultConfigPath(), ""), ctl, ObjectInfo{});
+    FAIL() << "an arrive gain of 5000 was accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("translation_stiffness"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("5000"), std::string::npos) << e.what();
+  }
+}
+
 // The empty gripper pushed harder than the take's Approach yield_force has
 // struck something (the object or the hand is not where the sensor says: a
 // tracker 10 cm low): the rest of the approach tracks at the soft follow
