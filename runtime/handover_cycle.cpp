@@ -194,7 +194,12 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
 
   // 6. collision environment: the perceived person
   control::CollisionEnvironment env;
-  env.person_valid = est.human.valid && !est.human.stale;
+  // a silent tracker does not make the place a person was free: they stay a while where the
+  // estimator last put them (a receiver reaching at 0.85 m/s during a 0.5 s dropout met the
+  // presenting arm, which had dropped them and moved on, g703_00117)
+  const double unseen_hold = settings_.collision.person.unseen_hold;
+  const bool person_held = est.human.valid && (!est.human.stale || est.human.silence <= unseen_hold);
+  env.person_valid = person_held;
   env.hand = est.human.hand;
   env.forearm = est.human.forearm;
   env.upper_arm = est.human.upper_arm;
@@ -210,7 +215,8 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   // while its rate read +0.2 m/s, g491_00039)
   env.forearm_velocity = forearm_vel_.velocity();
   env.upper_arm_velocity = upper_arm_vel_.velocity();
-  env.object_valid = est.object.valid && !est.object.stale && est.object.holder == perception::ObjectHolder::Person;
+  // in the person's hand, it is as stale as the hand (perception_estimator.cpp)
+  env.object_valid = est.object.valid && est.object.holder == perception::ObjectHolder::Person && person_held;
   env.object = est.object.pose;
   env.object_velocity = object_vel_.velocity();
   if (forecast_hand_) {

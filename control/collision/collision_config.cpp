@@ -150,6 +150,7 @@ CollisionConfig parse(const YamlReader& root) {
     if (auto c = p->optionalChild("upper_arm_radius")) cfg.person.upper_arm_radius = c->checkRange(c->asDouble(), 0.001, 0.5);
     if (auto c = p->optionalChild("free_arm_radius")) cfg.person.free_arm_radius = c->checkRange(c->asDouble(), 0.001, 0.5);
     if (auto c = p->optionalChild("margin")) cfg.person.margin = c->checkRange(c->asDouble(), 0.0, 0.5);
+    if (auto c = p->optionalChild("unseen_hold")) cfg.person.unseen_hold = c->checkRange(c->asDouble(), 0.0, 60.0);
     p->finish();
   }
 

@@ -95,6 +95,9 @@ struct PersonSettings {
   /// arm, forearm and hand, so at least the upper arm's
   double free_arm_radius = 0.045;
   double margin = 0.03;             ///< m, default extra clearance for sensor noise
+  /// s: a tracker gone silent leaves the person in the scene this long, at the
+  /// estimator's last (predicted, then held) pose; 0 drops them at once
+  double unseen_hold = 0.0;
   PersonTrunk trunk;                ///< legs, torso, head (set by the runtime)
 };
 

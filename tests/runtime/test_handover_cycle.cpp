@@ -221,6 +221,61 @@ TEST(HandoverCycle, TrunkStandsUnderTheTrackedShoulder) {
   }
 }
 
+/// `inner` until `silent_from` (s), then nothing: a tracker that went silent.
+class FallsSilent : public perception::PoseSource {
+ public:
+  FallsSilent(perception::PoseSource& inner, double silent_from) : inner_(inner), silent_from_(silent_from) {}
+  bool poll(double now, perception::PoseSample& out) override { return now < silent_from_ && inner_.poll(now, out); }
+
+ private:
+  perception::PoseSource& inner_;
+  double silent_from_;
+};
+
+/// True if any pair with the person's arm or hand is active (in the QP's reach).
+bool personInScene(const HandoverCycle& cycle) {
+  const auto& cm = cycle.collision().collisionModel();
+  for (int k = 0; k < cm.numPairs(); ++k) {
+    const control::CollisionBody& o = cm.bodies[cm.pairs[k].other_body];
+    if (o.isPerson() && cycle.collision().collisionData().results[k].active) return true;
+  }
+  return false;
+}
+
+/// The first time (s) after `from` the person is out of the collision scene, -1 if never before `until`.
+double droppedAt(double unseen_hold, double silent_from, double until) {
+  CycleSettings s = defaultCycleSettings();
+  s.collision.person.unseen_hold = unseen_hold;
+  HandoverCycle cycle(s);
+  const io::Vector7 q0 = cycle.controller().config().posture.target;
+  PersonInView person = handInView();
+  FallsSilent source(person, silent_from);
+  cycle.start(armAt(q0, 0.0), false);
+  for (int k = 0; k * 0.001 <= until; ++k) {
+    const double t = k * 0.001;
+    cycle.step(t, armAt(q0, t), source);
+    if (t < silent_from) EXPECT_TRUE(personInScene(cycle)) << "seen at t " << t;
+    if (t >= silent_from && !personInScene(cycle)) return t;
+  }
+  return -1.0;
+}
+
+// A tracker gone silent does not free the place the person was: they stay in
+// the collision scene for collision.person.unseen_hold after the last sample
+// (a receiver reaching during a 0.5 s dropout met the presenting arm that had
+// dropped them and moved on, g703_00117), then leave it; 0 drops them as soon
+// as the estimate turns stale (perception max_gap).
+TEST(HandoverCycle, ASilentTrackerLeavesThePersonInTheSceneForTheUnseenHold) {
+  const double silent_from = 0.2;
+  const double max_gap = defaultCycleSettings().estimator.max_gap;
+  const double held = droppedAt(0.5, silent_from, 1.5);
+  ASSERT_GT(held, 0.0);
+  EXPECT_NEAR(held, silent_from + 0.5, 0.01);
+  const double at_once = droppedAt(0.0, silent_from, 1.5);
+  ASSERT_GT(at_once, 0.0);
+  EXPECT_NEAR(at_once, silent_from + max_gap, 0.01);
+}
+
 TEST(HandoverCycle, StartSetsTheGripperAndPayload) {
   HandoverCycle empty(defaultCycleSettings());
   const io::Vector7 q0 = empty.controller().config().posture.target;

@@ -89,6 +89,14 @@ TEST(CollisionConfig, BuiltInDefaultsMatchTheIssue) {
   EXPECT_TRUE(c.pairs[0].damper.automatic);
 }
 
+TEST(CollisionConfig, UnseenHoldIsReadAndOffByDefault) {
+  EXPECT_EQ(parseCollisionConfig("pairs: [{name: t, robot: panda_hand, other: table}]", "t.yaml").person.unseen_hold,
+            0.0);
+  const CollisionConfig c =
+      parseCollisionConfig("person: {unseen_hold: 0.4}\npairs: [{name: t, robot: panda_hand, other: table}]", "t.yaml");
+  EXPECT_DOUBLE_EQ(c.person.unseen_hold, 0.4);
+}
+
 TEST(CollisionConfig, RepositoryFileLoads) {
   const CollisionConfig c = loadCollisionConfig(defaultCollisionConfigPath());
   EXPECT_FALSE(c.pairs.empty());
@@ -127,6 +135,9 @@ TEST(CollisionConfig, ErrorsNameFileKeyAndLine) {
 
   e = errorOf("person: {margin: -0.1}\npairs: [{name: a, robot: panda_hand, other: table}]\n");
   EXPECT_NE(e.find("person.margin"), std::string::npos) << e;
+
+  e = errorOf("person: {unseen_hold: -1}\npairs: [{name: a, robot: panda_hand, other: table}]\n");
+  EXPECT_NE(e.find("person.unseen_hold"), std::string::npos) << e;
 
   e = errorOf("table: {size: [1, 0, 1]}\npairs: [{name: a, robot: panda_hand, other: table}]\n");
   EXPECT_NE(e.find("table.size"), std::string::npos) << e;
