@@ -197,9 +197,8 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   // a silent tracker does not make the place a person was free: they stay a while where the
   // estimator last put them (a receiver reaching at 0.85 m/s during a 0.5 s dropout met the
   // presenting arm, which had dropped them and moved on, g703_00117)
-  const double unseen_hold = settings_.collision.person.unseen_hold;
-  const bool person_held = est.human.valid && (!est.human.stale || est.human.silence <= unseen_hold);
-  env.person_valid = person_held;
+  env.person_valid =
+      est.human.valid && (!est.human.stale || est.human.silence <= settings_.collision.person.unseen_hold);
   env.hand = est.human.hand;
   env.forearm = est.human.forearm;
   env.upper_arm = est.human.upper_arm;
@@ -216,7 +215,7 @@ const io::ArmCommand& HandoverCycle::step(double t, const io::ArmState& arm, per
   env.forearm_velocity = forearm_vel_.velocity();
   env.upper_arm_velocity = upper_arm_vel_.velocity();
   // in the person's hand, it is as stale as the hand (perception_estimator.cpp)
-  env.object_valid = est.object.valid && est.object.holder == perception::ObjectHolder::Person && person_held;
+  env.object_valid = est.object.valid && est.object.holder == perception::ObjectHolder::Person && env.person_valid;
   env.object = est.object.pose;
   env.object_velocity = object_vel_.velocity();
   if (forecast_hand_) {

@@ -242,7 +242,7 @@ bool personInScene(const HandoverCycle& cycle) {
   return false;
 }
 
-/// The first time (s) after `from` the person is out of the collision scene, -1 if never before `until`.
+/// The first time (s) from `silent_from` on that the person is out of the collision scene, -1 if not before `until`.
 double droppedAt(double unseen_hold, double silent_from, double until) {
   CycleSettings s = defaultCycleSettings();
   s.collision.person.unseen_hold = unseen_hold;
@@ -254,7 +254,9 @@ double droppedAt(double unseen_hold, double silent_from, double until) {
   for (int k = 0; k * 0.001 <= until; ++k) {
     const double t = k * 0.001;
     cycle.step(t, armAt(q0, t), source);
-    if (t < silent_from) EXPECT_TRUE(personInScene(cycle)) << "seen at t " << t;
+    if (t < silent_from) {
+      EXPECT_TRUE(personInScene(cycle)) << "seen at t " << t;
+    }
     if (t >= silent_from && !personInScene(cycle)) return t;
   }
   return -1.0;
