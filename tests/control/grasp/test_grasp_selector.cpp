@@ -377,6 +377,47 @@ TEST(GraspSelector, AGraspThatPutsAFingerOnThePersonsForearmIsNotTaken) {
   EXPECT_GT(feasible, 0);
 }
 
+// The arm passes the pre-grasp on its way in: a grasp whose pre-grasp
+// configuration lies inside what the constraints keep from the person is not
+// taken either (the arm stopped at the person's chest short of the pre-grasp
+// for 10 s until the person let the ball fall, g727_00117).
+TEST(GraspSelector, AGraspWhosePreGraspPutsTheArmIntoThePersonIsNotTaken) {
+  const Model& model = testing::panda();
+  std::vector<GraspSpec> specs = shapeGraspSpecs(PrimitiveShape::kSphere, {0.0255});
+  GraspSelector selector(model, specs, testing::shippedConfig());
+  const Isometry X_obj = bottleAt(Vector3(0.55, 0.0, 0.30));
+  const GraspChoice free_choice = selector.update(X_obj, testing::readyConfiguration());
+  ASSERT_TRUE(free_choice.valid);
+  ChainPoses at_grasp, at_pre;
+  chainPoses(model, free_choice.q_grasp, at_grasp);
+  chainPoses(model, free_choice.q_pre_grasp, at_pre);
+  // a small body behind the pre-grasp along the approach axis: within the arm's keep there,
+  // clear of it at the grasp itself (the search below finds such a place)
+  const Vector3 back = -free_choice.pre_grasp.linear().col(2);
+  ObstacleCapsule chest;
+  chest.radius = 0.02;
+  chest.keep_arm = 0.04;
+  chest.keep_gripper = 0.005;
+  bool placed = false;
+  for (double s = 0.0; s < 0.4 && !placed; s += 0.005) {
+    chest.a = chest.b = free_choice.pre_grasp.translation() + s * back;
+    placed = personBodyClearance(model, at_pre, &chest, 1) < 0.0 && personBodyClearance(model, at_grasp, &chest, 1) >= 0.0;
+  }
+  ASSERT_TRUE(placed) << "no point behind the pre-grasp is inside its keep and clear at the grasp";
+  selector.reset();
+  const GraspChoice& c = selector.update(X_obj, testing::readyConfiguration(), &chest, 1);
+  ASSERT_TRUE(c.valid);
+  EXPECT_NE(c.index, free_choice.index);
+  int feasible = 0;
+  for (const CandidateEvaluation& e : selector.evaluations()) {
+    if (!e.feasible) continue;
+    ++feasible;
+    chainPoses(model, e.q_pre_grasp, at_pre);
+    EXPECT_GE(personBodyClearance(model, at_pre, &chest, 1), 0.0);
+  }
+  EXPECT_GT(feasible, 0);
+}
+
 // Reachability with hysteresis: an object carried outward to the edge of the
 // workspace. A fresh selection refuses the grasp once its IK no longer
 // converges (the arm stretched); the choice made before stays while its IK
