@@ -67,7 +67,9 @@ TEST(HandoverR2H, FingersBackOutAlongTheApproachAxisBeforeTurningAway) {
   EXPECT_NEAR(backed(), 0.04, 0.004);                               // half way at half time
   EXPECT_NEAR(-rig.ctl.pose_velocity.head<3>().dot(approach), 0.5, 0.05);  // 1.875 * 0.08 / 0.3 m/s
   while (rig.world.time - t0 < 0.35 && rig.fsm->activePath().find("BackOut") != std::string::npos) rig.step();
-  if (rig.fsm->activePath().find("BackOut") != std::string::npos) EXPECT_NEAR(backed(), 0.08, 1e-6);
+  if (rig.fsm->activePath().find("BackOut") != std::string::npos) {
+    EXPECT_NEAR(backed(), 0.08, 1e-6);
+  }
   ASSERT_TRUE(rig.runUntilState("Retract", 5.0)) << rig.fsm->activePath();
   const Vector3 moved = rig.world.tcp.translation() - at_release.translation();
   EXPECT_GT(-moved.dot(approach), 0.06);                                // backed out
