@@ -121,6 +121,9 @@ struct HandoverParams {
   /// m: the workspace grows by this for the withdrawal test (not for the offer): a hand resting
   /// on the region's edge went out and in with every noisy sample, withdrawn and offered again
   double withdraw_workspace_margin = 0.0;
+  /// m: the body back within this of where it was first seen (the person's rest place), having
+  /// been twice this from it since the watch restarted, is withdrawn however slowly it went (0: off)
+  double withdraw_home_radius = 0.0;
   /// N: a pull beyond the object's weight toward where the person's hand came from, while
   /// the fingers close on or hold the object they still carry = they take it back (0: never)
   double take_back_force = 0.0;

@@ -13,6 +13,14 @@ bool WithdrawalWatch::withdrawn(const HandoverContext& ctx, bool hand) {
   // reach toward the arm's far edge was taken for a withdrawal, three times until the take
   // aborted: g643_00164)
   if (body.velocity.head<3>().norm() <= p.arrive_speed) arrived_ = true;
+  // taken back to where it was before the reach, however slowly: a person who brought the object
+  // 8 cm out and carried it home at 0.1 m/s held it there while the arm came and took it (g727_00042)
+  const Vector3& home = hand ? ctx.home_hand : ctx.home_object;
+  if (p.withdraw_home_radius > 0.0 && (hand ? ctx.home_hand_known : ctx.home_object_known)) {
+    const double from_home = (body.pose.translation() - home).norm();
+    if (from_home > 2.0 * p.withdraw_home_radius) left_home_ = true;
+    else if (left_home_ && from_home < p.withdraw_home_radius) return true;
+  }
   const bool home_bound = headingHome(ctx, hand);
   if (!home_bound && !(arrived_ && movingAway(ctx, hand))) {
     leaving_ = false;
@@ -24,7 +32,6 @@ bool WithdrawalWatch::withdrawn(const HandoverContext& ctx, bool hand) {
     from_ = at;
   }
   // carried away far enough, or heading home and nearly there (a reach taken back early is short)
-  const Vector3& home = hand ? ctx.home_hand : ctx.home_object;
   return (at - from_).norm() >= p.withdraw_distance || (home_bound && (at - home).norm() <= p.withdraw_distance);
 }
 

@@ -22,7 +22,7 @@ namespace handover::fsm {
 class WithdrawalWatch {
  public:
   /// Forgets a motion under way (the state starts).
-  void restart() { leaving_ = arrived_ = false; }
+  void restart() { leaving_ = arrived_ = left_home_ = false; }
   /// The person withdrew the receiver's hand (`hand`) or the offered object:
   /// perception stale for longer than params.stale_timeout, the body outside
   /// the workspace grown by params.withdraw_workspace_margin, or leaving
@@ -31,13 +31,16 @@ class WithdrawalWatch {
   /// params.arrive_speed: a reach under way may end far out)
   /// without a pause since it has come params.withdraw_distance (straight
   /// line) from where that motion began, or, heading home, it is within that
-  /// distance of home (a reach taken back early is short). A short dropout
-  /// keeps the motion under way. RT safe.
+  /// distance of home (a reach taken back early is short); or back within
+  /// params.withdraw_home_radius of home, however slowly, after it had been
+  /// twice that from it since restart(). A short dropout keeps the motion
+  /// under way. RT safe.
   bool withdrawn(const HandoverContext& ctx, bool hand);
 
  private:
   bool leaving_ = false;               ///< a leaving motion is under way
   bool arrived_ = false;               ///< the body has been slower than params.arrive_speed since restart()
+  bool left_home_ = false;             ///< it has been 2 params.withdraw_home_radius from home since restart()
   Vector3 from_ = Vector3::Zero();     ///< m, world: where it began
 };
 

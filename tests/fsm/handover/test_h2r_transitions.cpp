@@ -283,6 +283,28 @@ TEST(HandoverH2R, WithdrawDuringApproachRetreatsAndRetries) {
   EXPECT_EQ(rig.fsm->stats().retries, 1);
 }
 
+// A person who carries the object back to where they first held it has taken
+// it back, however slowly they went (params.withdraw.home_radius): at 0.1 m/s
+// no leaving motion was seen, they held it there, and the arm came and took it
+// (g727_00042, expected `aborted`, ended `timeout`).
+TEST(HandoverH2R, AnObjectCarriedSlowlyBackToWhereItWasFirstSeenIsWithdrawn) {
+  Rig rig;
+  const HandoverParams& p = rig.fsm->params();
+  ASSERT_GT(p.withdraw_home_radius, 0.0);
+  const Vector3 home = rig.world.hand;
+  ASSERT_GT((kMeet - home).norm(), 2.0 * p.withdraw_home_radius);
+  rig.world.arm_stuck = true;  // the approach goes on (no grasp)
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Approach", 5.0));
+  ASSERT_TRUE(rig.runUntil([&] { return rig.world.hand_vel.norm() == 0.0; }, 3.0));
+  rig.runFor(0.3);
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Approach")) << rig.fsm->activePath();
+  rig.world.moveHand(home, 0.5 * p.withdraw_speed);  // home, slower than a leaving motion
+  ASSERT_TRUE(rig.runUntilState("Retreat", 10.0)) << rig.fsm->activePath();
+  EXPECT_LT((rig.world.hand - home).norm(), p.withdraw_home_radius + 0.01);  // not before it was back
+  EXPECT_EQ(rig.fsm->stats().aborts, 1);
+}
+
 // A person who shifts the offered object a few centimetres, fast and away
 // from the robot, still offers it: only a motion that carries it
 // withdraw.distance away is a withdrawal (fsm/handover/withdrawal_watch.hpp).

@@ -91,6 +91,8 @@ TEST(HandoverConfig, BadParameterValues) {
   EXPECT_NE(msg.find("'home' is not one of: stow | safe | ready"), std::string::npos) << msg;
   msg = loadError(replaced(shipped(), "close_width: 0.0", "close_width: 0.09"));
   EXPECT_NE(msg.find("params.gripper.close_width"), std::string::npos) << msg;
+  msg = loadError(replaced(shipped(), "home_radius: 0.025", "home_radius: 0.9"));
+  EXPECT_NE(msg.find("params.withdraw.home_radius"), std::string::npos) << msg;
 }
 
 TEST(HandoverConfig, TakeGainsAndTheGraspFunnel) {
