@@ -3,6 +3,7 @@
 // small perturbations but not under large ones.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -35,6 +36,24 @@ Isometry bottleAt(const Vector3& p) {
   Isometry X = Isometry::Identity();
   X.translation() = p;
   return X;
+}
+
+// Every candidate the selection holds feasible keeps what the constraints keep
+// from `body`, at its grasp (`at_pre_grasp` false) or its pre-grasp
+// configuration: every capsule at least its keep from it. Returns how many.
+int feasibleClearOf(const Model& model, const GraspSelector& selector, const ObstacleCapsule& body, bool at_pre_grasp) {
+  ObstacleCapsule bare = body;
+  bare.keep_arm = bare.keep_gripper = 0.0;
+  ChainPoses poses;
+  int feasible = 0;
+  for (const CandidateEvaluation& e : selector.evaluations()) {
+    if (!e.feasible) continue;
+    ++feasible;
+    chainPoses(model, at_pre_grasp ? e.q_pre_grasp : e.q_grasp, poses);
+    EXPECT_GE(personBodyClearance(model, poses, &body, 1), 0.0);
+    EXPECT_GE(personBodyClearance(model, poses, &bare, 1), std::min(body.keep_arm, body.keep_gripper) - 1e-12);
+  }
+  return feasible;
 }
 
 TEST(GraspSelector, SideGraspOfAnUprightBottleStaysAwayFromEveryLimit) {
@@ -333,19 +352,33 @@ TEST(GraspSelector, ABallOnAPalmIsNotTakenWithTheGrippersPalmInTheHand) {
   }
 }
 
+// A ball in front of the robot, and the grasp the selection takes with nothing in the way.
+struct BallBeforeTheRobot {
+  const Model& model = testing::panda();
+  GraspSelector selector{model, shapeGraspSpecs(PrimitiveShape::kSphere, {0.0255}), testing::shippedConfig()};
+  Isometry X_obj = bottleAt(Vector3(0.55, 0.0, 0.30));
+  GraspChoice free_choice = selector.update(X_obj, testing::readyConfiguration());
+  /// A fresh selection with `body` in the way: it takes another grasp, and every feasible one keeps
+  /// clear of `body` at its grasp (`at_pre_grasp` false) or its pre-grasp configuration.
+  void expectAnotherGraspClearOf(const ObstacleCapsule& body, bool at_pre_grasp) {
+    selector.reset();
+    const GraspChoice& c = selector.update(X_obj, testing::readyConfiguration(), &body, 1);
+    ASSERT_TRUE(c.valid);
+    EXPECT_NE(c.index, free_choice.index);
+    EXPECT_GT(feasibleClearOf(model, selector, body, at_pre_grasp), 0);
+  }
+};
+
 // the person's forearm where the chosen grasp puts a finger: that grasp (and every other that
 // would bring a capsule, the fingers' included, nearer the arm than the collision constraints
 // let the robot go) is no grasp, and the selection takes another
 TEST(GraspSelector, AGraspThatPutsAFingerOnThePersonsForearmIsNotTaken) {
-  const Model& model = testing::panda();
-  std::vector<GraspSpec> specs = shapeGraspSpecs(PrimitiveShape::kSphere, {0.0255});
-  GraspSelector selector(model, specs, testing::shippedConfig());
-  const Isometry X_obj = bottleAt(Vector3(0.55, 0.0, 0.30));
-  const GraspChoice free_choice = selector.update(X_obj, testing::readyConfiguration());
-  ASSERT_TRUE(free_choice.valid);
+  BallBeforeTheRobot ball;
+  const Model& model = ball.model;
+  ASSERT_TRUE(ball.free_choice.valid);
   // a forearm capsule through that grasp's fingertip capsule
   ChainPoses poses;
-  chainPoses(model, free_choice.q_grasp, poses);
+  chainPoses(model, ball.free_choice.q_grasp, poses);
   Vector3 tip = Vector3::Zero();
   bool found = false;
   for (const Capsule& c : model.capsules) {
@@ -359,22 +392,7 @@ TEST(GraspSelector, AGraspThatPutsAFingerOnThePersonsForearmIsNotTaken) {
   forearm.keep_arm = 0.04;
   forearm.keep_gripper = 0.005;
   EXPECT_LT(personBodyClearance(model, poses, &forearm, 1), 0.0);
-  selector.reset();
-  const GraspChoice& c = selector.update(X_obj, testing::readyConfiguration(), &forearm, 1);
-  ASSERT_TRUE(c.valid);
-  EXPECT_NE(c.index, free_choice.index);
-  int feasible = 0;
-  for (const CandidateEvaluation& e : selector.evaluations()) {
-    if (!e.feasible) continue;
-    ++feasible;
-    chainPoses(model, e.q_grasp, poses);
-    EXPECT_GE(personBodyClearance(model, poses, &forearm, 1), 0.0);
-    // what that means in distances: every capsule at least its keep from the forearm
-    ObstacleCapsule bare = forearm;
-    bare.keep_arm = bare.keep_gripper = 0.0;
-    EXPECT_GE(personBodyClearance(model, poses, &bare, 1), forearm.keep_gripper - 1e-12);
-  }
-  EXPECT_GT(feasible, 0);
+  ball.expectAnotherGraspClearOf(forearm, false);
 }
 
 // The arm passes the pre-grasp on its way in: a grasp whose pre-grasp
@@ -382,40 +400,26 @@ TEST(GraspSelector, AGraspThatPutsAFingerOnThePersonsForearmIsNotTaken) {
 // taken either (the arm stopped at the person's chest short of the pre-grasp
 // for 10 s until the person let the ball fall, g727_00117).
 TEST(GraspSelector, AGraspWhosePreGraspPutsTheArmIntoThePersonIsNotTaken) {
-  const Model& model = testing::panda();
-  std::vector<GraspSpec> specs = shapeGraspSpecs(PrimitiveShape::kSphere, {0.0255});
-  GraspSelector selector(model, specs, testing::shippedConfig());
-  const Isometry X_obj = bottleAt(Vector3(0.55, 0.0, 0.30));
-  const GraspChoice free_choice = selector.update(X_obj, testing::readyConfiguration());
-  ASSERT_TRUE(free_choice.valid);
+  BallBeforeTheRobot ball;
+  const Model& model = ball.model;
+  ASSERT_TRUE(ball.free_choice.valid);
   ChainPoses at_grasp, at_pre;
-  chainPoses(model, free_choice.q_grasp, at_grasp);
-  chainPoses(model, free_choice.q_pre_grasp, at_pre);
+  chainPoses(model, ball.free_choice.q_grasp, at_grasp);
+  chainPoses(model, ball.free_choice.q_pre_grasp, at_pre);
   // a small body behind the pre-grasp along the approach axis: within the arm's keep there,
   // clear of it at the grasp itself (the search below finds such a place)
-  const Vector3 back = -free_choice.pre_grasp.linear().col(2);
+  const Vector3 back = -ball.free_choice.pre_grasp.linear().col(2);
   ObstacleCapsule chest;
   chest.radius = 0.02;
   chest.keep_arm = 0.04;
   chest.keep_gripper = 0.005;
   bool placed = false;
   for (double s = 0.0; s < 0.4 && !placed; s += 0.005) {
-    chest.a = chest.b = free_choice.pre_grasp.translation() + s * back;
+    chest.a = chest.b = ball.free_choice.pre_grasp.translation() + s * back;
     placed = personBodyClearance(model, at_pre, &chest, 1) < 0.0 && personBodyClearance(model, at_grasp, &chest, 1) >= 0.0;
   }
   ASSERT_TRUE(placed) << "no point behind the pre-grasp is inside its keep and clear at the grasp";
-  selector.reset();
-  const GraspChoice& c = selector.update(X_obj, testing::readyConfiguration(), &chest, 1);
-  ASSERT_TRUE(c.valid);
-  EXPECT_NE(c.index, free_choice.index);
-  int feasible = 0;
-  for (const CandidateEvaluation& e : selector.evaluations()) {
-    if (!e.feasible) continue;
-    ++feasible;
-    chainPoses(model, e.q_pre_grasp, at_pre);
-    EXPECT_GE(personBodyClearance(model, at_pre, &chest, 1), 0.0);
-  }
-  EXPECT_GT(feasible, 0);
+  ball.expectAnotherGraspClearOf(chest, true);
 }
 
 // Reachability with hysteresis: an object carried outward to the edge of the
