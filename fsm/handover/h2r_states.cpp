@@ -82,14 +82,13 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   // was tried: the noisy velocity of a person standing still started 33 of 300 approaches
   // that ended withdrawn at once, a retry lost each.)
   const Vector3 pos = (p.anticipate_reach ? restPose(body) : body.pose).translation();
-  const bool home_known = hand_ ? ctx.home_hand_known : ctx.home_object_known;
-  const Vector3& home = hand_ ? ctx.home_hand : ctx.home_object;
+  const Vector3* home = homeOf(ctx, hand_);
   // the workspace, or its edge where the arm's own kinematics reach the body (the planner's IK):
   // inside the band a person must leave to count as withdrawn (withdraw.workspace_margin), so an
   // approach it starts is not ended at once. A receiver's hand 5 mm past the box's side was never
   // taken for one that came, and the give ended aborted (g421_00123)
   constexpr double kRestPlace = 0.05;  // m, as WaitAgain's home_radius: still where it was first seen
-  const bool left_home = home_known && (pos - home).norm() > std::max(kRestPlace, home_radius_);
+  const bool left_home = home != nullptr && (pos - *home).norm() > std::max(kRestPlace, home_radius_);
   const bool in_workspace = inWorkspace(ctx, hand_) || (left_home && latestPlan(ctx, hand_).valid &&
                                                         inWorkspace(ctx, hand_, p.withdraw_workspace_margin));
   const bool usable = fresh(body, p.max_data_age) && in_workspace && (!hand_ || ctx.in.hand_open);
@@ -102,7 +101,7 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   // sensor's noise as 0.1-0.25 m/s: approaches began 0.04 s into the run, the arm on its way to
   // a person who had not moved yet and then brought the object in across its path)
   bool ready = speedToward(p.workspace.center, body) - significance_ * body.speed_std > approach_speed_;
-  const bool at_home = home_radius_ > 0.0 && home_known && (pos - home).norm() < home_radius_;
+  const bool at_home = home_radius_ > 0.0 && home != nullptr && (pos - *home).norm() < home_radius_;
   // resting, on its displacement (rest_window.hpp): a person holding the object still after a
   // dropout was never seen to rest by the noisy speed, and the robot gave up on them
   // within reach: near the shoulder, or where the arm's own kinematics reach it (the planner's IK),
@@ -113,7 +112,7 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   // away from the robot. Brought in from beside the table, an object crosses the robot's front more
   // than it comes nearer (9 cm nearer the shoulder in a 1.7 s reach): it was taken for an offer only
   // once it rested, the arm 0.5 m away (hand still to grasp 2.5-4.5 s, seed 631)
-  if (carried_in_ > 0.0 && home_known && within_reach && (pos - home).norm() > carried_in_ &&
+  if (carried_in_ > 0.0 && home != nullptr && within_reach && (pos - *home).norm() > carried_in_ &&
       body.velocity.head<3>().norm() - significance_ * body.speed_std > approach_speed_ &&
       speedToward(p.workspace.center, body) >= 0.0)
     ready = true;

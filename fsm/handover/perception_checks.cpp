@@ -20,12 +20,18 @@ bool inWorkspace(const HandoverContext& ctx, bool hand, double margin) {
   return !hand && fresh(ctx.in.hand, p.max_data_age) && p.workspace.contains(at(ctx.in.hand), margin);
 }
 
+const Vector3* homeOf(const HandoverContext& ctx, bool hand) {
+  if (hand) return ctx.home_hand_known ? &ctx.home_hand : nullptr;
+  return ctx.home_object_known ? &ctx.home_object : nullptr;
+}
+
 bool headingHome(const HandoverContext& ctx, bool hand) {
   // heading there, not only drifting that way: a person who moves the hand on to where they
   // settle was taken for one who withdraws
-  if (!(hand ? ctx.home_hand_known : ctx.home_object_known)) return false;
+  const Vector3* home = homeOf(ctx, hand);
+  if (home == nullptr) return false;
   const SensedBody& body = hand ? ctx.in.hand : ctx.in.object;
-  const double toward = speedToward(hand ? ctx.home_hand : ctx.home_object, body);
+  const double toward = speedToward(*home, body);
   constexpr double kHeading = 0.866;  // cos 30 deg
   return toward > ctx.params->withdraw_speed && toward >= kHeading * body.velocity.head<3>().norm();
 }

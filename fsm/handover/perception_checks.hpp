@@ -7,6 +7,10 @@
 
 namespace handover::fsm {
 
+/// Where the receiver's hand (`hand`) or the offered object was first seen
+/// (HandoverContext::home_*, world, m): the person's rest place; null while
+/// it has not been seen.
+const Vector3* homeOf(const HandoverContext& ctx, bool hand);
 /// Speed of `body` toward `center` (m/s, > 0 when approaching).
 double speedToward(const Vector3& center, const SensedBody& body);
 /// A usable and recent sample.

@@ -15,9 +15,9 @@ bool WithdrawalWatch::withdrawn(const HandoverContext& ctx, bool hand) {
   if (body.velocity.head<3>().norm() <= p.arrive_speed) arrived_ = true;
   // taken back to where it was before the reach, however slowly: a person who brought the object
   // 8 cm out and carried it home at 0.1 m/s held it there while the arm came and took it (g727_00042)
-  const Vector3& home = hand ? ctx.home_hand : ctx.home_object;
-  if (p.withdraw_home_radius > 0.0 && (hand ? ctx.home_hand_known : ctx.home_object_known)) {
-    const double from_home = (body.pose.translation() - home).norm();
+  const Vector3* home = homeOf(ctx, hand);
+  if (p.withdraw_home_radius > 0.0 && home != nullptr) {
+    const double from_home = (body.pose.translation() - *home).norm();
     if (from_home > 2.0 * p.withdraw_home_radius) left_home_ = true;
     else if (left_home_ && from_home < p.withdraw_home_radius) return true;
   }
@@ -31,8 +31,8 @@ bool WithdrawalWatch::withdrawn(const HandoverContext& ctx, bool hand) {
     leaving_ = true;
     from_ = at;
   }
-  // carried away far enough, or heading home and nearly there (a reach taken back early is short)
-  return (at - from_).norm() >= p.withdraw_distance || (home_bound && (at - home).norm() <= p.withdraw_distance);
+  // carried away far enough, or heading home (so it is known) and nearly there (a reach taken back early is short)
+  return (at - from_).norm() >= p.withdraw_distance || (home_bound && (at - *home).norm() <= p.withdraw_distance);
 }
 
 }  // namespace handover::fsm
