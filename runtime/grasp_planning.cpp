@@ -1,6 +1,7 @@
 #include "runtime/grasp_planning.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "control/grasp/upright_placement.hpp"
@@ -85,6 +86,7 @@ PersonKeeps personKeeps(const control::CollisionModel& model) {
       case control::CollisionBodyKind::kHumanForearm: keep = &k.forearm; break;
       case control::CollisionBodyKind::kHumanUpperArm: keep = &k.upper_arm; break;
       case control::CollisionBodyKind::kHumanTrunk: keep = &k.trunk; break;
+      case control::CollisionBodyKind::kObject: keep = &k.object; break;
       default: continue;
     }
     const double d = p.margin + p.damper.s_dist;
@@ -93,6 +95,40 @@ PersonKeeps personKeeps(const control::CollisionModel& model) {
     slot = std::max(slot, d);
   }
   return k;
+}
+
+cg::ObstacleCapsule heldObjectObstacle(const io::ObjectShape& shape, const control::Isometry& pose,
+                                       const PersonKeeps::Keep& keep) {
+  cg::ObstacleCapsule o;
+  o.held_object = true;
+  o.keep_arm = keep.arm;
+  o.keep_gripper = keep.gripper;
+  o.a = o.b = pose.translation();
+  const control::Vector3& size = shape.size;
+  switch (shape.kind) {
+    case io::ObjectShape::Kind::kSphere:
+      o.radius = size.x();
+      break;
+    case io::ObjectShape::Kind::kCylinder: {
+      const double r = size.x(), half_h = 0.5 * size.y();
+      if (half_h >= r) {
+        o.radius = r;
+        o.a = pose * control::Vector3(0.0, 0.0, -(half_h - r));
+        o.b = pose * control::Vector3(0.0, 0.0, half_h - r);
+      } else {
+        o.box_axes = pose.linear();
+        o.box_half_extents = control::Vector3(r * M_SQRT1_2, r * M_SQRT1_2, half_h);
+      }
+      break;
+    }
+    case io::ObjectShape::Kind::kBox:
+      o.box_axes = pose.linear();
+      o.box_half_extents = 0.5 * size;
+      break;
+    case io::ObjectShape::Kind::kUnknown:
+      break;
+  }
+  return o;
 }
 
 std::vector<cg::ObstacleCapsule> trunkObstacles(const control::PersonTrunk& trunk, double free_arm_radius) {
@@ -214,7 +250,11 @@ void GraspPlanning::update(const perception::PerceptionEstimate& est, const cont
   if (!robot_holds) {
     if (fresh_sample && est.object.valid && est.human.stamp != object_stamp_) {
       object_stamp_ = est.human.stamp;
-      const int n = personObstacles(est.human, true, torso);
+      int n = personObstacles(est.human, true, torso);
+      // the object itself: where the arm lines up, the gripper is still in front of it
+      if (settings_.object_shape.known())
+        obstacles_[static_cast<std::size_t>(n++)] =
+            heldObjectObstacle(settings_.object_shape, est.object.pose, settings_.keeps.object);
       copyChoice(object_.update(est.object.pose, q, obstacles_.data(), n), object_plan_);
     }
     hand_plan_.valid = false;

@@ -47,10 +47,12 @@ struct PersonKeeps {
     double arm = 0.0, gripper = 0.0;
   };
   Keep hand, forearm, upper_arm, trunk;
+  Keep object;  ///< from the object the person holds out (the gripper lines up in front of it)
 };
 
 /// The largest clearance the `always` and `apart` pair rules keep between
-/// each class of robot capsule and each part of the person.
+/// each class of robot capsule and each part of the person, and the object
+/// in their hand.
 PersonKeeps personKeeps(const control::CollisionModel& model);
 
 /// Where a receiver pulls a presented object (world, unit, horizontal): back
@@ -97,6 +99,16 @@ std::vector<control::grasp::GraspSpec> presentationSpecs(const GraspPlanningSett
 
 /// At most this many trunk capsules (GraspPlanningSettings::trunk).
 constexpr int kMaxTrunkObstacles = 4;
+
+/// The object the person holds out as a selector obstacle (held_object, with
+/// `keep` from it): a shape inscribed in it (a box; a sphere; a cylinder as
+/// the capsule of its radius whose caps end at its flat faces, or, flatter
+/// than it is wide, as the square box inscribed in it), so a pre-grasp is
+/// refused only where the gripper surely meets the object. World frame;
+/// `pose` the object frame (interfaces/object_shape.hpp). An unknown shape
+/// gives an obstacle of radius 0 at its centre.
+control::grasp::ObstacleCapsule heldObjectObstacle(const io::ObjectShape& shape, const control::Isometry& pose,
+                                                   const PersonKeeps::Keep& keep);
 
 /// The trunk of the collision model (a torso box, a head sphere, the free
 /// arm's capsule; legs under the table are left out) as selector capsules in
@@ -153,8 +165,8 @@ class GraspPlanning : public fsm::PlannerInterface {
   /// The person as last seen (for the carries that wait for a receiver).
   std::optional<perception::HumanEstimate> last_person_;
   std::optional<control::Isometry> last_torso_;
-  /// The person's arm, hand, trunk and reach (uprightPlacement).
-  std::array<control::grasp::ObstacleCapsule, 4 + kMaxTrunkObstacles> obstacles_;
+  /// The person's arm, hand, trunk and reach (uprightPlacement), the held object (take).
+  std::array<control::grasp::ObstacleCapsule, 5 + kMaxTrunkObstacles> obstacles_;
 };
 
 /// The presentation selector's options: no twins (a held object turns with the

@@ -84,7 +84,7 @@ double armClearance(const Model& model, const ChainPoses& poses, const ObstacleC
   for (const Capsule& c : model.capsules) {
     for (int k = 0; k < num_obstacles; ++k) {
       const ObstacleCapsule& o = obstacles[k];
-      if (o.keep_only || (o.gripper_works_here && c.role == CapsuleRole::kFingertip)) continue;
+      if (o.keep_only || o.held_object || (o.gripper_works_here && c.role == CapsuleRole::kFingertip)) continue;
       best = std::min(best, capsuleDistance(poses, c, o));
     }
   }
@@ -96,9 +96,23 @@ double workZoneClearance(const Model& model, const ChainPoses& poses, const Obst
   double best = std::numeric_limits<double>::infinity();
   for (int k = 0; k < num_obstacles; ++k) {
     const ObstacleCapsule& o = obstacles[k];
-    if (!o.gripper_works_here) continue;
+    if (!o.gripper_works_here || o.held_object) continue;
     for (const Capsule& c : model.capsules)
       if (c.role != CapsuleRole::kFingertip) best = std::min(best, capsuleDistance(poses, c, o));
+  }
+  return best;
+}
+
+double heldObjectClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
+                           int num_obstacles) {
+  double best = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < num_obstacles; ++k) {
+    const ObstacleCapsule& o = obstacles[k];
+    if (!o.held_object) continue;
+    for (const Capsule& c : model.capsules) {
+      const double keep = c.role == CapsuleRole::kArm ? o.keep_arm : o.keep_gripper;
+      best = std::min(best, capsuleDistance(poses, c, o) - keep);
+    }
   }
   return best;
 }
@@ -108,7 +122,7 @@ double personBodyClearance(const Model& model, const ChainPoses& poses, const Ob
   double best = std::numeric_limits<double>::infinity();
   for (int k = 0; k < num_obstacles; ++k) {
     const ObstacleCapsule& o = obstacles[k];
-    if (o.keep_only) continue;
+    if (o.keep_only || o.held_object) continue;
     for (const Capsule& c : model.capsules) {
       // the gripper works in the person's hand (workZoneClearance); the arm's links keep clear of it
       if (o.gripper_works_here && c.role != CapsuleRole::kArm) continue;
@@ -124,7 +138,7 @@ double keepShortfall(const Model& model, const ChainPoses& poses, const Obstacle
   double shortfall = 0.0;
   for (int k = 0; k < num_obstacles; ++k) {
     const ObstacleCapsule& o = obstacles[k];
-    if (o.gripper_works_here) continue;  // the fingers close in it: workZoneClearance
+    if (o.gripper_works_here || o.held_object) continue;  // the fingers close in it: workZoneClearance
     for (const Capsule& c : model.capsules) {
       const double keep = c.role == CapsuleRole::kArm ? o.keep_arm : o.keep_gripper;
       shortfall = std::max(shortfall, keep - capsuleDistance(poses, c, o));

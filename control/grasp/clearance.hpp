@@ -37,6 +37,13 @@ struct ObstacleCapsule {
   /// receiving hand (the object goes onto it: the gripper may come as near as
   /// its constraints let it) and the receiver's trunk.
   bool keep_only = false;
+  /// The object the person holds out, that the fingers will close on: none
+  /// of the above counts it (at the grasp the palm's fit to it decides,
+  /// palm_fit.hpp); heldObjectClearance does, where the arm lines up before
+  /// the fingers go around it. A pre-grasp inside the object itself (a 60 cm
+  /// tube, the grasp below its upper end) held the gripper against the
+  /// object for 10 s until the approach gave up.
+  bool held_object = false;
 };
 
 /// Smallest distance between the segments [p0, p1] and [q0, q1] (m).
@@ -68,6 +75,14 @@ double armClearance(const Model& model, const ChainPoses& poses, const ObstacleC
 /// sit in the person's hand at that grasp.
 double workZoneClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
                          int num_obstacles);
+
+/// Smallest surface distance between any of the model's capsules, the
+/// fingertips included, and the held objects (ObstacleCapsule::held_object),
+/// beyond what the collision constraints keep from them (keep_arm,
+/// keep_gripper), m; +infinity without such obstacles. For a pre-grasp: the
+/// whole gripper is still in front of the object there.
+double heldObjectClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
+                           int num_obstacles);
 
 /// Smallest surface distance between any of the model's capsules, the
 /// fingertips included, and the person's body (the forearm, upper arm and

@@ -62,6 +62,8 @@ bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, 
     // the arm passes the pre-grasp on its way in: inside the keeps there, it stopped at the person's
     // chest short of it until they let the ball fall (g727_00117)
     if (config_.reject_inside_keeps && personBodyClearance(model_, poses, obstacles, num_obstacles) < 0.0) return false;
+    // where the arm lines up, the fingers are still in front of the object, not in it
+    if (heldObjectClearance(model_, poses, obstacles, num_obstacles) < 0.0) return false;
     pre = scoreConfiguration(model_, frame_, poses, p.q, q_now, obstacles, num_obstacles, config_.score);
   }
   chainPoses(model_, g.q, poses);

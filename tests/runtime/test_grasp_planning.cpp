@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
+#include <utility>
 
 #include "control/grasp/clearance.hpp"
 #include "control/grasp/shape_grasps.hpp"
@@ -357,6 +359,13 @@ TEST(GraspPlanning, KeepsWhatTheShippedCollisionRulesKeepFromThePerson) {
   ASSERT_NE(rule, cfg.pairs.end());
   EXPECT_NEAR(k.forearm.gripper, rule->margin + budget + rule->damper.s_dist, 1e-12);
   EXPECT_LT(k.forearm.gripper, k.forearm.arm);
+  // the wrist and the gripper keep the object rule's sDist from the object in the hand
+  const auto object = std::find_if(cfg.pairs.begin(), cfg.pairs.end(),
+                                   [](const control::PairRule& r) { return r.name == "object_gripper"; });
+  ASSERT_NE(object, cfg.pairs.end());
+  EXPECT_NEAR(k.object.gripper, object->margin + object->damper.s_dist, 1e-12);
+  EXPECT_NEAR(k.object.arm, object->margin + object->damper.s_dist, 1e-12);
+  EXPECT_GT(k.object.gripper, 0.0);
 }
 TEST(GraspPlanning, AHeldObjectWaitsOutOfTheWayOfTheReceiverWhoWillReachForIt) {
   // a receiver in front and to the right, their shoulder above the table; the
@@ -453,5 +462,110 @@ TEST(GraspPlanning, AnObjectHeldByOneEndIsPresentedWithItsOtherEndInTheHand) {
   EXPECT_GT((object.inverse() * control::Vector3::Zero()).z(), 0.03) << "the hand holds the upper part";
   EXPECT_LT(presentationShortfall(s, e, planning.handPlan().q_target), 0.005);
 }
+}  // namespace
+}  // namespace handover::runtime
+
+namespace handover::runtime {
+namespace {
+
+using cg::testing::panda;
+using cg::testing::readyConfiguration;
+using cg::testing::shippedConfig;
+
+TEST(GraspPlanning, TheHeldObjectObstacleIsInscribedInItsShape) {
+  control::Isometry X = control::Isometry::Identity();
+  X.linear() = Eigen::AngleAxisd(0.4, control::Vector3(1.0, -2.0, 0.3).normalized()).toRotationMatrix();
+  X.translation() = control::Vector3(0.5, -0.1, 0.3);
+  const PersonKeeps::Keep keep{0.004, 0.006};
+  io::ObjectShape shape;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-0.4, 0.4);
+  for (const auto& [kind, size] : {std::pair{io::ObjectShape::Kind::kCylinder, control::Vector3(0.03, 0.60, 0.0)},
+                                   std::pair{io::ObjectShape::Kind::kCylinder, control::Vector3(0.10, 0.02, 0.0)},
+                                   std::pair{io::ObjectShape::Kind::kBox, control::Vector3(0.05, 0.07, 0.20)},
+                                   std::pair{io::ObjectShape::Kind::kSphere, control::Vector3(0.035, 0.0, 0.0)}}) {
+    shape.kind = kind;
+    shape.size = size;
+    const cg::ObstacleCapsule o = heldObjectObstacle(shape, X, keep);
+    EXPECT_TRUE(o.held_object);
+    EXPECT_EQ(o.keep_arm, 0.004);
+    EXPECT_EQ(o.keep_gripper, 0.006);
+    // no point of the obstacle lies outside the shape; the shape's centre lies in the obstacle
+    int inside = 0;
+    for (int i = 0; i < 20000; ++i) {
+      const control::Vector3 p(u(rng), u(rng), u(rng));
+      const control::Vector3 w = X * p;
+      const double d = o.box_half_extents.isZero()
+                           ? cg::segmentDistance(w, w, o.a, o.b) - o.radius
+                           : cg::segmentBoxDistance(w, w, o.a, o.box_axes, o.box_half_extents) - o.radius;
+      if (d > 0.0) continue;
+      ++inside;
+      EXPECT_LE(io::signedDistance(shape, p), 1e-9) << p.transpose();
+    }
+    EXPECT_GT(inside, 0);
+    const double centre = o.box_half_extents.isZero()
+                              ? cg::segmentDistance(X.translation(), X.translation(), o.a, o.b) - o.radius
+                              : -1.0;
+    EXPECT_LT(centre, 0.0);
+  }
+}
+
+// A 60 cm tube held tilted toward the robot by 30 degrees (outsider o_14),
+// declared with two grasps, one from above 20 cm up its axis: the pre-grasp
+// 8 cm back along that approach put the gripper on the tube's upper end, and
+// the constraint that keeps the gripper off the object held it there for
+// 10 s until the approach gave up.
+TEST(GraspPlanning, NoPreGraspPutsTheGripperInsideTheObjectInTheHand) {
+  GraspPlanningSettings s;
+  s.config = shippedConfig();
+  cg::GraspSpec declared;
+  declared.placement.translation() = control::Vector3(0.0, 0.0, 0.15);
+  declared.placement.linear() = (Eigen::AngleAxisd(M_PI, control::Vector3::UnitZ()) *
+                                 Eigen::AngleAxisd(1.0472, control::Vector3::UnitY()) *
+                                 Eigen::AngleAxisd(M_PI, control::Vector3::UnitX())).toRotationMatrix();
+  declared.has_free_axis = true;
+  declared.preference = s.config.declared_preference;
+  s.object_grasps.push_back(declared);
+  // and from above, 20 cm up the tube: the tube's last 10 cm run up between the fingers
+  cg::GraspSpec high = declared;
+  high.placement.translation() = control::Vector3(0.0, 0.0, 0.20);
+  high.placement.linear() = (Eigen::AngleAxisd(M_PI, control::Vector3::UnitZ()) *
+                             Eigen::AngleAxisd(-0.5236, control::Vector3::UnitY()) *
+                             Eigen::AngleAxisd(M_PI, control::Vector3::UnitX())).toRotationMatrix();
+  s.object_grasps.push_back(high);
+  s.object_shape.kind = io::ObjectShape::Kind::kCylinder;
+  s.object_shape.size = control::Vector3(0.03, 0.60, 0.0);
+  s.keeps.object = {0.005, 0.005};
+  perception::PerceptionEstimate e = offered(0.1, control::Vector3(0.505, -0.05, 0.35));
+  e.object.pose.linear() = Eigen::AngleAxisd(-0.5236, control::Vector3::UnitY()).toRotationMatrix();
+  const cg::ObstacleCapsule tube = heldObjectObstacle(s.object_shape, e.object.pose, s.keeps.object);
+  auto preGraspClearance = [&](const control::Vector7& q_pre) {
+    cg::ChainPoses poses;
+    cg::chainPoses(panda(), q_pre, poses);
+    return cg::heldObjectClearance(panda(), poses, &tube, 1);
+  };
+  // the premise: blind to the tube, the planner finds turns about its axis that line up inside it
+  GraspPlanningSettings blind = s;
+  blind.object_shape = io::ObjectShape{};
+  GraspPlanning without(panda(), blind);
+  without.update(e, readyConfiguration(), false);
+  int inside = 0;
+  for (const cg::CandidateEvaluation& c : without.objectSelector().evaluations())
+    inside += c.feasible && preGraspClearance(c.q_pre_grasp) < 0.0;
+  ASSERT_GT(inside, 0);
+  // knowing it, no candidate does, and one in front of it is chosen
+  GraspPlanning planning(panda(), s);
+  planning.update(e, readyConfiguration(), false);
+  ASSERT_TRUE(planning.objectPlan().valid);
+  int feasible = 0;
+  for (const cg::CandidateEvaluation& c : planning.objectSelector().evaluations()) {
+    if (!c.feasible) continue;
+    ++feasible;
+    EXPECT_GE(preGraspClearance(c.q_pre_grasp), 0.0);
+  }
+  EXPECT_GT(feasible, 0);
+  EXPECT_GE(preGraspClearance(planning.objectPlan().q_pre), 0.0);
+}
+
 }  // namespace
 }  // namespace handover::runtime

@@ -65,16 +65,24 @@ TEST(Clearance, ArmClearanceIsTheNearestCapsuleSurface) {
   EXPECT_GT(far.total, near.total);
 }
 
+// The arm at its ready pose (gripper pointing down) in `poses`, and a sphere of
+// `radius` centred `depth` below its TCP.
+ObstacleCapsule sphereBelowTheReadyTcp(double depth, double radius, ChainPoses& poses) {
+  const Model& model = testing::panda();
+  chainPoses(model, testing::readyConfiguration(), poses);
+  const Vector3 at = chainFramePose(model, poses, model.frameId("tcp")).translation() - Vector3(0, 0, depth);
+  return ObstacleCapsule{at, at, radius};
+}
+
 // the person's hand where the fingers work: the fingertip capsule closing
 // around the object in it is not measured against it, the palm and the arm are
 TEST(Clearance, TheHandWhereTheFingersWorkCountsOnlyAgainstThePalmAndTheArm) {
   const Model& model = testing::panda();
   ChainPoses poses;
-  chainPoses(model, testing::readyConfiguration(), poses);
-  const Isometry tcp = chainFramePose(model, poses, model.frameId("tcp"));
   // a hand sphere 3 cm below the TCP (gripper pointing down): inside the fingertip capsule's
   // reach, clear of the palm
-  ObstacleCapsule hand{tcp.translation() - Vector3(0, 0, 0.03), tcp.translation() - Vector3(0, 0, 0.03), 0.02};
+  ObstacleCapsule hand = sphereBelowTheReadyTcp(0.03, 0.02, poses);
+  const Isometry tcp = chainFramePose(model, poses, model.frameId("tcp"));
   const double any = armClearance(model, poses, &hand, 1);
   EXPECT_LT(any, 0.0);  // the fingertip capsule overlaps it
   EXPECT_EQ(workZoneClearance(model, poses, &hand, 1), std::numeric_limits<double>::infinity());  // not a work zone
@@ -92,6 +100,32 @@ TEST(Clearance, TheHandWhereTheFingersWorkCountsOnlyAgainstThePalmAndTheArm) {
   // moved up into the palm: a negative work-zone clearance
   hand.a = hand.b = tcp.translation() + Vector3(0, 0, 0.05);
   EXPECT_LT(workZoneClearance(model, poses, &hand, 1), 0.0);
+}
+
+TEST(Clearance, AHeldObjectCountsOnlyForTheHeldObjectClearanceAndThereTheFingertipsToo) {
+  const Model& model = testing::panda();
+  ChainPoses poses;
+  // a ball 3 cm below the TCP (gripper pointing down): between the fingertips, clear of the palm
+  ObstacleCapsule ball = sphereBelowTheReadyTcp(0.03, 0.02, poses);
+  const Isometry tcp = chainFramePose(model, poses, model.frameId("tcp"));
+  ball.held_object = true;
+  ball.keep_arm = ball.keep_gripper = 0.005;
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(armClearance(model, poses, &ball, 1), inf);
+  EXPECT_EQ(workZoneClearance(model, poses, &ball, 1), inf);
+  EXPECT_EQ(personBodyClearance(model, poses, &ball, 1), inf);
+  EXPECT_EQ(keepShortfall(model, poses, &ball, 1), 0.0);
+  // every capsule counts, the fingertips too, beyond the keep
+  ObstacleCapsule plain = ball;
+  plain.held_object = false;
+  const double overlap = armClearance(model, poses, &plain, 1);
+  ASSERT_LT(overlap, 0.0);  // the fingertip capsule overlaps it
+  EXPECT_NEAR(heldObjectClearance(model, poses, &ball, 1), overlap - 0.005, 1e-12);
+  EXPECT_EQ(heldObjectClearance(model, poses, &plain, 1), inf);  // not a held object
+  // 30 cm below the TCP: clear, by its distance less the keep
+  ball.a = ball.b = plain.a = plain.b = tcp.translation() - Vector3(0, 0, 0.30);
+  EXPECT_NEAR(heldObjectClearance(model, poses, &ball, 1), armClearance(model, poses, &plain, 1) - 0.005, 1e-12);
+  EXPECT_GT(heldObjectClearance(model, poses, &ball, 1), 0.0);
 }
 
 // a box by a dense sampling of the segment, each point's distance exact (clamped to the box)
