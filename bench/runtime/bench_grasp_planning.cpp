@@ -9,7 +9,8 @@
 // step (HandoverCycle::plan).
 // BM_TakePlanning: a take's grasp per object sample, a bottle (declared side
 // grasp and the cylinder's shape families) swaying in a person's hand, their
-// arm and trunk as obstacles with what the shipped collision rules keep.
+// arm and trunk as obstacles with what the shipped collision rules keep, and
+// the bottle's own shape (no pre-grasp inside it).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -92,6 +93,8 @@ void BM_TakePlanning(benchmark::State& state) {
   s.object_grasps.push_back(side);
   for (const auto& g : control::grasp::shapeGraspSpecs(control::grasp::PrimitiveShape::kCylinder, {0.03, 0.20}))
     s.object_grasps.push_back(g);
+  s.object_shape.kind = io::ObjectShape::Kind::kCylinder;  // the bottle itself: no pre-grasp inside it
+  s.object_shape.size = control::Vector3(0.03, 0.20, 0.0);
   const control::CollisionConfig cc = control::loadCollisionConfig(control::defaultCollisionConfigPath());
   s.trunk = runtime::trunkObstacles(cc.person.trunk, cc.person.free_arm_radius);
   s.keeps = runtime::personKeeps(control::buildCollisionModel(pandaModel(), cc));
