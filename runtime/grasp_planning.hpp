@@ -9,7 +9,9 @@
 // free axis, the gripper's half-turn twins) the one the arm reaches best,
 // avoiding the person's forearm, upper arm and trunk (no configuration nearer
 // them than the collision constraints keep the arm: PersonKeeps), the hand
-// where the fingers work kept clear of the palm and the arm's links.
+// where the fingers work kept clear of the palm and the arm's links, and the
+// whole gripper in front of the object itself where the arm lines up (its
+// pre-grasp: heldObjectObstacle).
 // Give: while the robot holds the object, each new hand sample re-selects the
 // presentation: the declared TCP-in-hand frame turned about the hand's z axis
 // (the receiver takes the object at any turn about the vertical), upright or
