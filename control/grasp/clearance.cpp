@@ -77,6 +77,11 @@ double capsuleDistance(const ChainPoses& poses, const Capsule& c, const Obstacle
   return core - c.radius - o.radius;
 }
 
+// what the collision constraints keep capsule `c` from obstacle `o` (m): the arm's or the gripper's keep
+double keepOf(const Capsule& c, const ObstacleCapsule& o) {
+  return c.role == CapsuleRole::kArm ? o.keep_arm : o.keep_gripper;
+}
+
 }  // namespace
 
 double armClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles, int num_obstacles) {
@@ -110,8 +115,7 @@ double heldObjectClearance(const Model& model, const ChainPoses& poses, const Ob
     const ObstacleCapsule& o = obstacles[k];
     if (!o.held_object) continue;
     for (const Capsule& c : model.capsules) {
-      const double keep = c.role == CapsuleRole::kArm ? o.keep_arm : o.keep_gripper;
-      best = std::min(best, capsuleDistance(poses, c, o) - keep);
+      best = std::min(best, capsuleDistance(poses, c, o) - keepOf(c, o));
     }
   }
   return best;
@@ -126,8 +130,7 @@ double personBodyClearance(const Model& model, const ChainPoses& poses, const Ob
     for (const Capsule& c : model.capsules) {
       // the gripper works in the person's hand (workZoneClearance); the arm's links keep clear of it
       if (o.gripper_works_here && c.role != CapsuleRole::kArm) continue;
-      const double keep = c.role == CapsuleRole::kArm ? o.keep_arm : o.keep_gripper;
-      best = std::min(best, capsuleDistance(poses, c, o) - keep);
+      best = std::min(best, capsuleDistance(poses, c, o) - keepOf(c, o));
     }
   }
   return best;
@@ -140,8 +143,7 @@ double keepShortfall(const Model& model, const ChainPoses& poses, const Obstacle
     const ObstacleCapsule& o = obstacles[k];
     if (o.gripper_works_here || o.held_object) continue;  // the fingers close in it: workZoneClearance
     for (const Capsule& c : model.capsules) {
-      const double keep = c.role == CapsuleRole::kArm ? o.keep_arm : o.keep_gripper;
-      shortfall = std::max(shortfall, keep - capsuleDistance(poses, c, o));
+      shortfall = std::max(shortfall, keepOf(c, o) - capsuleDistance(poses, c, o));
     }
   }
   return shortfall;

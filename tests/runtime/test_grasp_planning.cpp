@@ -490,23 +490,22 @@ TEST(GraspPlanning, TheHeldObjectObstacleIsInscribedInItsShape) {
     EXPECT_TRUE(o.held_object);
     EXPECT_EQ(o.keep_arm, 0.004);
     EXPECT_EQ(o.keep_gripper, 0.006);
+    // signed distance (m) of a world point to the obstacle
+    auto toObstacle = [&](const control::Vector3& w) {
+      return (o.box_half_extents.isZero() ? cg::segmentDistance(w, w, o.a, o.b)
+                                          : cg::segmentBoxDistance(w, w, o.a, o.box_axes, o.box_half_extents)) -
+             o.radius;
+    };
     // no point of the obstacle lies outside the shape; the shape's centre lies in the obstacle
     int inside = 0;
     for (int i = 0; i < 20000; ++i) {
       const control::Vector3 p(u(rng), u(rng), u(rng));
-      const control::Vector3 w = X * p;
-      const double d = o.box_half_extents.isZero()
-                           ? cg::segmentDistance(w, w, o.a, o.b) - o.radius
-                           : cg::segmentBoxDistance(w, w, o.a, o.box_axes, o.box_half_extents) - o.radius;
-      if (d > 0.0) continue;
+      if (toObstacle(X * p) > 0.0) continue;
       ++inside;
       EXPECT_LE(io::signedDistance(shape, p), 1e-9) << p.transpose();
     }
     EXPECT_GT(inside, 0);
-    const double centre = o.box_half_extents.isZero()
-                              ? cg::segmentDistance(X.translation(), X.translation(), o.a, o.b) - o.radius
-                              : -1.0;
-    EXPECT_LT(centre, 0.0);
+    EXPECT_LE(toObstacle(X.translation()), 0.0);
   }
 }
 
