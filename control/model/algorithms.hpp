@@ -18,6 +18,11 @@ void computeAll(const Model& model, Data& data, const Vector7& q, const Vector7&
 /// World pose of a frame (requires forwardKinematics).
 Isometry framePlacement(const Model& model, const Data& data, int frame_id);
 
+/// World orientation of a frame at q, from the joint rotations alone (no
+/// Data, no velocities): for questions about other configurations than the
+/// cycle's, e.g. the way the TCP turns along a joint path. Real-time safe.
+Matrix3 frameRotation(const Model& model, int frame_id, const Vector7& q);
+
 /// 6x7 Jacobian of a frame: rows [linear velocity of the frame origin; angular
 /// velocity], both in world axes (requires forwardKinematics).
 void frameJacobian(const Model& model, const Data& data, int frame_id, Matrix6x7& J);

@@ -59,6 +59,14 @@ Isometry framePlacement(const Model& model, const Data& data, int frame_id) {
   return data.oMb[f.body] * f.placement;
 }
 
+Matrix3 frameRotation(const Model& model, int frame_id, const Vector7& q) {
+  const Frame& f = model.frames[frame_id];
+  Matrix3 R = Matrix3::Identity();
+  for (int j = 0; j < f.body; ++j)
+    R = R * model.joint_placements[j].linear() * Eigen::AngleAxisd(q[j], model.joint_axes[j]).toRotationMatrix();
+  return R * f.placement.linear();
+}
+
 void pointJacobian(const Model&, const Data& data, int body, const Vector3& point_world, Matrix3x7& J) {
   // v_point = v_origin + omega x r  =>  J_lin - [r]x J_ang
   const Vector3 r = point_world - data.oMb[body].translation();

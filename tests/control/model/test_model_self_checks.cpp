@@ -92,6 +92,21 @@ TEST_F(ModelSelfChecks, JacobianMatchesFiniteDifferenceOfPose) {
   }
 }
 
+// The orientation-only kinematics (for configurations other than the cycle's)
+// is the full forward kinematics' orientation, for every kind of frame.
+TEST_F(ModelSelfChecks, FrameRotationIsTheForwardKinematicsOrientation) {
+  Vector7 q, v;
+  for (const char* frame : {"tcp", "panda_link0", "panda_link4", "ft_sensor", "panda_leftfinger"}) {
+    const int f = model.frameId(frame);
+    for (int s = 0; s < 50; ++s) {
+      sample(q, v);
+      forwardKinematics(model, data, q, v);
+      ASSERT_LE((frameRotation(model, f, q) - framePlacement(model, data, f).linear()).norm(), 1e-12)
+          << frame << " sample " << s;
+    }
+  }
+}
+
 TEST_F(ModelSelfChecks, CrbaEqualsRneaColumns) {
   Vector7 q, v;
   for (int s = 0; s < 100; ++s) {
