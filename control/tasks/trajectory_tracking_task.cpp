@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "control/so3.hpp"
+#include "control/tasks/planned_turn.hpp"
 
 namespace handover::control {
 
@@ -73,10 +74,12 @@ void TrajectoryTrackingTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen
   angle_error_ = logRotation(R_ee * g.pose.linear().transpose()).norm();
   // full orientation rows unless the rotation about a free axis is left free
   if (!offset_.has_free_axis || offset_.approach_from_base) {
-    error_.tail<3>() = orientationError(R_ee, g.pose.linear());
     if (offset_.has_joint_plan) {
-      error_.tail<3>() = turnError(error_.tail<3>(), J_.bottomRows<3>() * (offset_.joint_plan - data.q), long_way_);
+      const Quaternion now(R_ee);
+      const Quaternion plan = planOrientationAlongJointPath(model, frame_id_, data.q, now, offset_.joint_plan);
+      error_.tail<3>() = plannedTurnError(now, Quaternion(g.pose.linear()), plan, long_way_);
     } else {
+      error_.tail<3>() = orientationError(R_ee, g.pose.linear());
       long_way_ = false;
     }
     A.block<3, kArmDofs>(3, VariableLayout::kQdd) = J_.bottomRows<3>();
@@ -98,24 +101,6 @@ void TrajectoryTrackingTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen
   A.block<3, 3>(3, VariableLayout::kObs + 3) = P * skew(a);
   b.tail<3>() = P * (-orientation_.stiffness * speedLimited(c, orientation_, max_angular_speed_) - orientation_.damping * cdot + Sb * drift.tail<3>() -
                      w_ee.cross(w_ee.cross(bv)) + w_obs.cross(w_obs.cross(a)));
-}
-
-Vector3 turnError(const Vector3& e, const Vector3& plan_turn, bool& long_way) {
-  const double theta = e.norm();
-  const double plan = plan_turn.norm();
-  // the long way only where it can be the plan's: beyond a quarter turn, or when the joints'
-  // motion toward the plan turns the TCP more than half a turn, which no shortest rotation does
-  // (a wrist at the far end of its range reaching round: g31_00157)
-  if (theta < 1e-9 || plan < 1e-9 || (theta < 0.5 * M_PI && plan <= M_PI)) {
-    long_way = false;
-    return e;
-  }
-  // the PD turns by -e: the plan agrees when plan_turn . e < 0
-  const double along = plan_turn.dot(e) / (theta * plan);  // cosine
-  constexpr double kClear = 0.2;
-  if (along > kClear) long_way = true;
-  else if (along < -kClear) long_way = false;
-  return long_way ? Vector3(e - (2.0 * M_PI / theta) * e) : e;
 }
 
 }  // namespace handover::control

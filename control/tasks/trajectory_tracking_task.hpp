@@ -9,8 +9,8 @@
 //   orientation, full (3 rows, world axes):
 //     J_w qddot - omegadot_obs = -Ko e_o - Do (omega_tcp - omega_obs) - Jdot_w qdot
 //     e_o = q_tcp (-) q_grasp (orientationError), or, with a joint plan in the
-//     offset, the long way round when the plan's joint motion turns the TCP
-//     that way (turnError below)
+//     offset, the long way round when the joints' path to the plan turns the
+//     TCP that way (planned_turn.hpp)
 //   orientation, free axis (3 rows of rank 2): for a symmetric object only the
 //   alignment of the gripper's copy b = R_tcp u of the object's axis with the
 //   object's axis a = R_obs s matters (u = s in grasp-frame axes). With
@@ -85,19 +85,7 @@ class TrajectoryTrackingTask : public Task {
   Matrix6x7 J_ = Matrix6x7::Zero();
   Vector6 error_ = Vector6::Zero();
   double angle_error_ = 0.0;
-  bool long_way_ = false;  ///< the turn goes the long way round (hysteresis state)
+  bool long_way_ = false;  ///< the turn goes the long way round (held where the plan says nothing)
 };
-
-/// The orientation error the PD acts on (rad, world axes). `e`: the shortest
-/// one (norm theta <= pi; the PD turns by -e). `plan_turn`: the TCP's angular
-/// displacement the joints' motion toward the plan gives to first order,
-/// J_w (q_plan - q). Beyond a quarter turn, or when the plan turns the TCP
-/// more than half a turn (no shortest rotation does: a wrist at the far end
-/// of its range reaching round), when the plan turns the other way
-/// (plan_turn . e clearly > 0), the error becomes the long way round,
-/// e - 2 pi e / theta (norm 2 pi - theta), so the tracking turns with the
-/// joints instead of against them. `long_way` keeps the choice until the
-/// plan clearly turns the short way (no flicker). Real-time safe.
-Vector3 turnError(const Vector3& e, const Vector3& plan_turn, bool& long_way);
 
 }  // namespace handover::control

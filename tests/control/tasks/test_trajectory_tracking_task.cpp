@@ -12,6 +12,7 @@
 #include "control/controller.hpp"
 #include "control/model/algorithms.hpp"
 #include "control/so3.hpp"
+#include "control/tasks/planned_turn.hpp"
 #include "control/tasks/observed_object_integrator.hpp"
 #include "control/tasks/trajectory_tracking_task.hpp"
 #include "tests/support/panda_model.hpp"
@@ -396,35 +397,6 @@ TEST(GraspFrame, ASlidingPlacementFeedsItsMotionForward) {
   EXPECT_NEAR((s.velocity.head<3>() - still.velocity.head<3>()).norm(), sdot, 1e-12);
 }
 
-// The way of a large turn (turnError): short unless the plan turns the
-// other way; never long below a quarter turn; the choice holds until the
-// plan clearly turns the short way.
-TEST(TurnError, GoesTheLongWayOnlyWhenThePlanTurnsThatWay) {
-  const Vector3 e(0.0, 0.0, 2.4);  // the PD turns by -e: -2.4 rad about z
-  bool long_way = false;
-  // the plan turns about -z too: the short way
-  EXPECT_EQ(turnError(e, Vector3(0.0, 0.0, -3.0), long_way), e);
-  EXPECT_FALSE(long_way);
-  // the plan turns about +z: 2 pi - 2.4 about +z, i.e. an error of -(2 pi - 2.4) about z
-  const Vector3 l = turnError(e, Vector3(0.0, 0.0, 3.9), long_way);
-  EXPECT_TRUE(long_way);
-  EXPECT_NEAR(l.z(), -(2.0 * M_PI - 2.4), 1e-12);
-  EXPECT_NEAR(l.head<2>().norm(), 0.0, 1e-12);
-  // a plan about a perpendicular axis keeps the last choice
-  EXPECT_EQ(turnError(e, Vector3(1.0, 0.0, 0.0), long_way), l);
-  EXPECT_EQ(turnError(e, Vector3(0.0, 0.0, -1.0), long_way), e);
-  EXPECT_FALSE(long_way);
-  // below a quarter turn the short way, unless the plan turns more than half a turn (no
-  // shortest rotation does) the other way
-  EXPECT_EQ(turnError(Vector3(0.0, 0.0, 1.2), Vector3(0.0, 0.0, 3.0), long_way), Vector3(0.0, 0.0, 1.2));
-  EXPECT_FALSE(long_way);
-  EXPECT_EQ(turnError(Vector3(0.0, 0.0, 1.2), Vector3(0.0, 0.0, -4.5), long_way), Vector3(0.0, 0.0, 1.2));
-  EXPECT_FALSE(long_way);
-  const Vector3 far = turnError(Vector3(0.0, 0.0, 1.2), Vector3(0.0, 0.0, 4.5), long_way);
-  EXPECT_TRUE(long_way);
-  EXPECT_NEAR(far.z(), -(2.0 * M_PI - 1.2), 1e-12);
-}
-
 namespace {
 
 // A controller tracking a resting grasp frame at the TCP pose of `q_plan`
@@ -514,4 +486,34 @@ TEST(TrajectoryTrackingTask, ASmallTurnGoesTheLongWayWhenTheJointPlanTurnsMoreTh
   EXPECT_LT(with.position_left, 0.005);
   EXPECT_LT(with.joints_off_plan, 0.05);
   EXPECT_GT(with.wrist_margin, 0.2);
+}
+
+// Seven joints moving at once, the TCP to turn 3.1 rad (near half a turn):
+// the first-order guess of the way, J_w (q_plan - q), points the short way,
+// but the joints' path turns the TCP the long way round (its lift along the
+// path ends on the far quaternion sign). Going the guessed way, the wrist
+// winds to its limit and the arm stops contorted, 1.1 rad and 0.11 m off
+// with the joints 5 rad from the plan (measured); the path's way arrives.
+TEST(TrajectoryTrackingTask, ATurnOfManyJointsGoesTheWayTheirPathTurnsNotTheLinearisedWay) {
+  Vector7 q0, q_plan;
+  q0 << -0.0032912, -0.57026, 0.304227, -1.8384, 0.320627, 0.971033, -1.1461;
+  q_plan << 0.888007, -1.44587, -0.842883, -0.911014, 0.410358, 1.91734, 1.8262;
+  const int tcp = panda().frameId("tcp");
+  const Quaternion now(frameRotation(panda(), tcp, q0));
+  const Quaternion target(frameRotation(panda(), tcp, q_plan));
+  const Vector3 shortest = orientationError(now.toRotationMatrix(), target.toRotationMatrix());
+  ASSERT_GT(shortest.norm(), 3.0);
+  // the linearised guess: the short way (the PD turns by -e, the guess along -e)
+  Data d(panda());
+  forwardKinematics(panda(), d, q0, Vector7::Zero());
+  Matrix6x7 J;
+  frameJacobian(panda(), d, tcp, J);
+  ASSERT_LT((J.bottomRows<3>() * (q_plan - q0)).dot(shortest), 0.0);
+  // the path: the long way
+  ASSERT_LT(planOrientationAlongJointPath(panda(), tcp, q0, now, q_plan).dot(now), 0.0);
+  const Turn with = turnToward(q0, q_plan, true);
+  EXPECT_LT(with.orientation_left, 0.01);
+  EXPECT_LT(with.position_left, 0.005);
+  EXPECT_LT(with.joints_off_plan, 0.05);
+  EXPECT_GT(with.wrist_margin, 0.3);
 }
