@@ -26,7 +26,10 @@ struct Scenario {
   std::shared_ptr<CollisionConstraint> collision;
 #endif
 
-  explicit Scenario(bool with_collision) {
+  /// `with_joint_plan`: the offset carries the grasp planner's configuration
+  /// (as in Approach and Present), so the step also lifts the TCP's
+  /// orientation along the joint path to it (planned_turn.hpp).
+  explicit Scenario(bool with_collision, bool with_joint_plan = false) {
     const Model model = loadModel(std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf");
     ctl = std::make_unique<Controller>(model, loadControllerConfig(defaultControllerConfigPath()));
     q = ctl->config().posture.target;
@@ -35,6 +38,11 @@ struct Scenario {
     ctl->reset(in);
     GraspOffset g;
     g.placement.linear() = expRotation(Vector3(M_PI, 0.0, 0.0));
+    if (with_joint_plan) {
+      // a plan 0.3-0.6 rad from the start on every joint: the typical 2-step lift
+      g.has_joint_plan = true;
+      g.joint_plan = q + (Vector7() << 0.3, -0.4, 0.5, 0.3, -0.6, 0.4, 0.5).finished();
+    }
     ctl->setGraspOffset(g);
 #ifdef HANDOVER_BENCH_COLLISION
     if (with_collision) {
@@ -80,8 +88,8 @@ struct Scenario {
   }
 };
 
-void runBench(benchmark::State& state, bool with_collision) {
-  Scenario sc(with_collision);
+void runBench(benchmark::State& state, bool with_collision, bool with_joint_plan = false) {
+  Scenario sc(with_collision, with_joint_plan);
   for (int k = 0; k < 500; ++k) sc.step();  // past the start transient
   long fallbacks0 = sc.ctl->fallbackCount();
   for (auto _ : state) {
@@ -95,6 +103,9 @@ void runBench(benchmark::State& state, bool with_collision) {
 
 void BM_ControlStep(benchmark::State& state) { runBench(state, false); }
 BENCHMARK(BM_ControlStep)->Unit(benchmark::kMicrosecond);
+
+void BM_ControlStepWithJointPlan(benchmark::State& state) { runBench(state, false, true); }
+BENCHMARK(BM_ControlStepWithJointPlan)->Unit(benchmark::kMicrosecond);
 
 #ifdef HANDOVER_BENCH_COLLISION
 void BM_ControlStepWithCollision(benchmark::State& state) { runBench(state, true); }
