@@ -27,8 +27,9 @@ struct Scenario {
 #endif
 
   /// `with_joint_plan`: the offset carries the grasp planner's configuration
-  /// (as in Approach and Present), so the step also lifts the TCP's
-  /// orientation along the joint path to it (planned_turn.hpp).
+  /// (as in Approach and Present): the first step lifts the TCP's orientation
+  /// along the joint path to it, every step picks the turn's way from that
+  /// lift (planned_turn.hpp).
   explicit Scenario(bool with_collision, bool with_joint_plan = false) {
     const Model model = loadModel(std::string(HANDOVER_SOURCE_DIR) + "/scenes/panda.urdf");
     ctl = std::make_unique<Controller>(model, loadControllerConfig(defaultControllerConfigPath()));

@@ -1,6 +1,7 @@
 // The way of a large turn with a joint plan (control/tasks/planned_turn.hpp):
 // the lift of the TCP's orientation along the joint path plus the error, as
-// the tracking task runs it every step of a planned phase. Arg: the summed
+// the tracking task runs it when a plan arrives (between plans a step only
+// keeps the TCP's quaternion sign continuous: PlannedTurnLift). Arg: the summed
 // joint motion to the plan in quarter turns, so the number of orientation-
 // only kinematics evaluated (1 typical; 11 from the middle of the range to
 // its corner, 22 corner to corner).

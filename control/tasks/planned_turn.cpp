@@ -23,6 +23,21 @@ Quaternion planOrientationAlongJointPath(const Model& model, int frame_id, const
   return lifted;
 }
 
+Quaternion PlannedTurnLift::plan(const Model& model, int frame_id, const Vector7& q, Quaternion& now,
+                                 const Vector7& q_plan) {
+  const bool continuous = valid_ && q_plan == q_plan_ && (q - q_).cwiseAbs().sum() <= 0.5 * M_PI;
+  if (continuous) {
+    if (now.dot(now_) < 0.0) now.coeffs() = -now.coeffs();
+  } else {
+    plan_ = planOrientationAlongJointPath(model, frame_id, q, now, q_plan);
+    q_plan_ = q_plan;
+    valid_ = true;
+  }
+  q_ = q;
+  now_ = now;
+  return plan_;
+}
+
 Vector3 plannedTurnError(const Quaternion& now, const Quaternion& target, const Quaternion& plan, bool& long_way) {
   Quaternion t = target;
   const double agree = t.dot(plan);  // cos of half the angle between plan and target

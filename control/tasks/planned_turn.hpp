@@ -41,4 +41,27 @@ Vector3 plannedTurnError(const Quaternion& now, const Quaternion& target, const 
 /// round has no defined axis).
 inline constexpr double kDefinedAxis = 0.1;
 
+/// planOrientationAlongJointPath once per plan instead of every control step.
+/// While the joints move continuously the lift's class cannot change (joint
+/// space is contractible), so the plan's lifted quaternion stays valid
+/// against the frame's orientation followed continuously step to step (one
+/// sign test). The path is lifted again when the plan changes, or when q
+/// moved more than the lift's own step bound since the last call (a reset).
+/// Real-time safe.
+class PlannedTurnLift {
+ public:
+  /// `now`: the frame's orientation at q (either sign); turned to the sign
+  /// continuous with the last call's, which the returned plan is lifted against.
+  Quaternion plan(const Model& model, int frame_id, const Vector7& q, Quaternion& now, const Vector7& q_plan);
+  /// The next plan() lifts the path again (no plan in force).
+  void reset() { valid_ = false; }
+
+ private:
+  bool valid_ = false;
+  Vector7 q_plan_ = Vector7::Zero();  ///< rad, the plan lifted for
+  Vector7 q_ = Vector7::Zero();       ///< rad, q at the last call
+  Quaternion now_ = Quaternion::Identity();   ///< the frame's orientation at the last call, continuous
+  Quaternion plan_ = Quaternion::Identity();  ///< the plan's orientation lifted against now_
+};
+
 }  // namespace handover::control

@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "control/so3.hpp"
-#include "control/tasks/planned_turn.hpp"
 
 namespace handover::control {
 
@@ -75,12 +74,13 @@ void TrajectoryTrackingTask::compute(const ControlContext& ctx, Eigen::Ref<Eigen
   // full orientation rows unless the rotation about a free axis is left free
   if (!offset_.has_free_axis || offset_.approach_from_base) {
     if (offset_.has_joint_plan) {
-      const Quaternion now(R_ee);
-      const Quaternion plan = planOrientationAlongJointPath(model, frame_id_, data.q, now, offset_.joint_plan);
+      Quaternion now(R_ee);
+      const Quaternion plan = lift_.plan(model, frame_id_, data.q, now, offset_.joint_plan);
       error_.tail<3>() = plannedTurnError(now, Quaternion(g.pose.linear()), plan, long_way_);
     } else {
       error_.tail<3>() = orientationError(R_ee, g.pose.linear());
       long_way_ = false;
+      lift_.reset();
     }
     A.block<3, kArmDofs>(3, VariableLayout::kQdd) = J_.bottomRows<3>();
     A.block<3, 3>(3, VariableLayout::kObs + 3) = -Matrix3::Identity();

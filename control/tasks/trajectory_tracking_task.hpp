@@ -30,6 +30,7 @@
 #include "control/formulation/task.hpp"
 #include "control/tasks/grasp_frame.hpp"
 #include "control/tasks/pd_gains.hpp"
+#include "control/tasks/planned_turn.hpp"
 
 namespace handover::control {
 
@@ -86,6 +87,7 @@ class TrajectoryTrackingTask : public Task {
   Vector6 error_ = Vector6::Zero();
   double angle_error_ = 0.0;
   bool long_way_ = false;  ///< the turn goes the long way round (held where the plan says nothing)
+  PlannedTurnLift lift_;   ///< the plan's orientation lifted along the joint path, once per plan
 };
 
 }  // namespace handover::control

@@ -139,3 +139,38 @@ TEST(PlannedTurn, TheErrorIsContinuousThroughHalfATurn) {
   EXPECT_LT(largest_jump, 0.0101);  // 5 rad / 500 steps, nothing more
   EXPECT_LT(last.norm(), 1e-6);
 }
+
+// Once per plan: along a continuous joint motion (with the plan changing now
+// and then, and one jump of the arm), the cached lift gives the error the
+// lift recomputed every step gives, and it lifts the path only when the plan
+// changes or q jumps.
+TEST(PlannedTurn, TheLiftOncePerPlanGivesTheErrorOfTheLiftEveryStep) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int tcp = panda().frameId("tcp");
+  PlannedTurnLift lift;
+  Vector7 q = randomConfiguration(rng), q_plan = randomConfiguration(rng);
+  Quaternion target = rotationAt(q_plan);  // the plan's TCP orientation, as the planner's IK puts it
+  bool way_cached = false, way_fresh = false;
+  Vector7 qd = Vector7::Zero();
+  int disagreements = 0;
+  for (int k = 0; k < 3000; ++k) {
+    if (k % 700 == 699) {  // a new plan
+      q_plan = randomConfiguration(rng);
+      target = rotationAt(q_plan);
+    }
+    if (k == 1500) q = randomConfiguration(rng);             // the arm jumps (a reset)
+    for (int i = 0; i < kArmDofs; ++i) qd[i] = 0.9 * qd[i] + 0.2 * u(rng);
+    q += 0.01 * qd;  // rad per step: a fast arm at 1 kHz moves far less
+    // the cycle's quaternion comes with either sign
+    Quaternion now = rotationAt(q);
+    if (k % 3 == 0) now.coeffs() = -now.coeffs();
+    const Quaternion fresh = planOrientationAlongJointPath(panda(), tcp, q, now, q_plan);
+    const Vector3 e_fresh = plannedTurnError(now, target, fresh, way_fresh);
+    Quaternion tracked = now;
+    const Quaternion cached = lift.plan(panda(), tcp, q, tracked, q_plan);
+    const Vector3 e_cached = plannedTurnError(tracked, target, cached, way_cached);
+    disagreements += (e_cached - e_fresh).norm() > 1e-9;
+  }
+  EXPECT_EQ(disagreements, 0);
+}
