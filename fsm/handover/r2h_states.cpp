@@ -203,6 +203,14 @@ void Release::onStart(HandoverContext& ctx) {
   hold_ = ctx.in.tcp_pose;
   ride_.start(ctx);
   ctrl().setPoseTarget(hold_);
+  // held as stiffly as closing fingers are (a take's WaitForRelease too): at
+  // the pose task's own K = 6, meant for retracts, the arm drifted 3 mm on
+  // with the pull it had given way to, and the finger nearest the palm met it
+  // as it opened (g787_00457). Only while the fingers open: stiff on in
+  // ConfirmGone, the gripper stood in the way of a cylinder pulled out at
+  // 0.6 m/s and the blow spun joint 6 past its limit (g823_00417)
+  ctrl().setPoseStiffness(ctx.params->closing_tracking_translation_stiffness,
+                          ctx.params->closing_tracking_orientation_stiffness);
 }
 
 bool Release::onRun(HandoverContext& ctx) {

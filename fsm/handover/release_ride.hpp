@@ -12,8 +12,21 @@
 // and only as far as the object must go to be clear of the finger pads (its
 // bounding radius plus a pad's half span): beyond that the gripper has
 // nothing left to make way for. The object's estimate when it is seen, else
-// the hand that holds it. Real-time safe.
+// the hand that holds it.
+//
+// The opening itself makes way for the receiver's hand: a parallel gripper
+// opens symmetrically about the TCP, so with the closing axis pointing at the
+// hand (an object put on a palm from the side, one finger between the object
+// and the palm) the near finger moves into the palm by half the width gained
+// (g787_00457: the lower finger grazed the palm as it opened). The set-point
+// moves along the closing axis by half the width gained since the release,
+// away from the hand, scaled by how much the closing axis points at it
+// (cos of the angle between the axis and the hand-to-TCP line): the near
+// finger stays where it was, the far one takes the whole opening; with the
+// closing axis across the line to the hand nothing moves. Real-time safe.
 #pragma once
+
+#include <algorithm>
 
 #include "fsm/handover/controller_handle.hpp"
 #include "fsm/handover/handover_context.hpp"
@@ -31,6 +44,17 @@ class ReleaseRide {
     body_ = ctx.params->release_ride ? leaving(in) : Body::kNone;
     if (body_ != Body::kNone) origin_ = pose(in).translation();
     clear_ = io::boundingRadius(ctx.object.shape) + ctx.params->finger_half_span;
+    width_ = in.finger_width;
+    last_width_ = in.finger_width;
+    last_time_ = in.time;
+    opening_rate_ = 0.0;
+    away_.setZero();
+    if (ctx.params->release_ride && in.hand.valid) {
+      const Vector3 closing = in.tcp_pose.linear().col(1);
+      const Vector3 from_hand = in.tcp_pose.translation() - in.hand.pose.translation();
+      const double n = from_hand.norm();
+      if (n > 1e-9) away_ = closing * (closing.dot(from_hand) / n);
+    }
   }
 
   /// Offset (world, m) of the set-point from where the release left it, and
@@ -38,18 +62,38 @@ class ReleaseRide {
   void follow(const HandoverInput& in, Vector3& offset, Vector3& velocity) const {
     offset.setZero();
     velocity.setZero();
+    // the near finger holds its place as the fingers open (never back: a
+    // closing gripper is not this state's), the opening's rate fed forward:
+    // the pose task's soft spring alone lagged the half millimetre a finger
+    // gains every 10 ms
+    offset += away_ * (0.5 * std::max(0.0, in.finger_width - width_));
+    velocity += away_ * (0.5 * opening_rate_);
     if (body_ == Body::kNone) return;
     const SensedBody& b = body_ == Body::kObject ? in.object : in.hand;
     if (!b.valid) return;
     const Vector3 moved = b.pose.translation() - origin_;
     const Vector3 across = moved - moved.dot(axis_) * axis_;
     const double n = across.norm();
-    offset = n > clear_ ? (clear_ / n) * across : across;
-    if (n <= clear_) velocity = b.velocity.head<3>() - b.velocity.head<3>().dot(axis_) * axis_;
+    offset += n > clear_ ? (clear_ / n) * across : across;
+    if (n <= clear_) velocity += b.velocity.head<3>() - b.velocity.head<3>().dot(axis_) * axis_;
   }
 
-  /// The pose task's set-point: `hold` (world) moved by follow(), its rate fed forward.
-  void hold(ControllerHandle& ctrl, const Isometry& hold, const HandoverInput& in) const {
+  /// Measures how fast the fingers open (call every cycle, before follow()).
+  void measure(const HandoverInput& in) {
+    const double dt = in.time - last_time_;
+    if (dt <= 0.0) return;
+    // the width's rate over this cycle, smoothed over kRateTime (a gripper
+    // reports its width in steps, not at every control cycle)
+    const double rate = std::max(0.0, in.finger_width - last_width_) / dt;
+    opening_rate_ += (rate - opening_rate_) * std::min(1.0, dt / kRateTime);
+    last_width_ = in.finger_width;
+    last_time_ = in.time;
+  }
+
+  /// The pose task's set-point: `hold` (world) moved by follow(), its rate
+  /// fed forward; measures the opening first.
+  void hold(ControllerHandle& ctrl, const Isometry& hold, const HandoverInput& in) {
+    measure(in);
     Vector3 offset, velocity;
     follow(in, offset, velocity);
     Isometry goal = hold;
@@ -72,6 +116,13 @@ class ReleaseRide {
   Body body_ = Body::kNone;
   Vector3 origin_ = Vector3::Zero();
   double clear_ = 0.0;  ///< m, how far the object goes before it is clear of the fingers
+  static constexpr double kRateTime = 0.01;  ///< s, smoothing of the opening rate
+  double width_ = 0.0;  ///< m, the finger opening at the release
+  double last_width_ = 0.0, last_time_ = 0.0;  ///< m, s: the previous cycle's
+  double opening_rate_ = 0.0;                  ///< m/s, smoothed, >= 0
+  /// unit closing axis (world) scaled by the cosine of its angle to the
+  /// hand-to-TCP line: the set-point's way per metre of half-width gained
+  Vector3 away_ = Vector3::Zero();
 };
 
 }  // namespace handover::fsm

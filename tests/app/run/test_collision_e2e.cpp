@@ -112,6 +112,22 @@ TEST(CollisionEndToEnd, FingersLeavingABallInTheReceiversHandKeepOffIt) {
   EXPECT_EQ(s.outcome, "success") << app::formatSummary(s);
 }
 
+// A ball put on a palm from the side with the closing axis upright
+// (r2h_ball_on_palm_release, from the benchmark): one finger lies between the
+// ball and the palm. A parallel gripper opens symmetrically; held where it
+// was, with the pose task's soft retract gains, that finger met the palm as
+// the fingers opened (3 contact steps). Release now holds the near finger
+// where it was and stiffly (fsm/handover/release_ride.hpp).
+TEST(CollisionEndToEnd, TheFingerBetweenABallAndThePalmOpensAwayFromThePalm) {
+  testing::ScratchDir dir("collision_ball_on_palm_release");
+  const app::RunSummary s = runFile(dir, "tests/app/run/data/r2h_ball_on_palm_release.yaml");
+  EXPECT_EQ(s.human_contacts, 0) << app::formatSummary(s);
+  EXPECT_EQ(s.penetration_time, 0.0);
+  EXPECT_EQ(s.limit_violations.position + s.limit_violations.velocity + s.limit_violations.torque, 0)
+      << app::formatSummary(s);
+  EXPECT_EQ(s.outcome, "success") << app::formatSummary(s);
+}
+
 // Each of `files` succeeds without touching the person or violating a limit.
 void expectNoRunInto(std::initializer_list<const char*> files) {
   for (const char* file : files) {

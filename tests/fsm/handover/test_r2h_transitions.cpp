@@ -96,8 +96,17 @@ TEST(HandoverR2H, TheOpeningGripperRidesAlongWithTheObjectBeingTaken) {
   const Isometry at_release = rig.world.tcp;
   const Vector3 approach = at_release.linear().col(2);
   const Vector3 across = at_release.linear().col(1);  // the closing axis
+  // the opening makes way for the hand along the closing axis, by the cosine
+  // of its angle to the hand (release_ride.hpp; tested on its own in
+  // test_release_ride.cpp): here the hand lies nearly across it
+  const double toward = across.dot((at_release.translation() - rig.world.hand).normalized());
+  const double width_at_release = rig.world.width;
+  auto opening = [&] { return 0.5 * toward * (rig.world.width - width_at_release); };
   auto offset = [&] { return Vector3(rig.ctl.pose.translation() - at_release.translation()); };
   EXPECT_LT(offset().norm(), 1e-9);
+  // while the fingers open the set-point is held as stiffly as closing fingers are
+  EXPECT_TRUE(rig.ctl.pose_gains_active);
+  EXPECT_EQ(rig.ctl.pose_gains_translation, rig.fsm->params().closing_tracking_translation_stiffness);
   rig.world.moveHand(rig.world.hand + 0.02 * across + 0.01 * approach, 0.4);
   rig.step();
   rig.step();  // the input of the first step saw the hand before it moved
@@ -105,14 +114,20 @@ TEST(HandoverR2H, TheOpeningGripperRidesAlongWithTheObjectBeingTaken) {
   EXPECT_NEAR(rig.ctl.pose_velocity.head<3>().dot(approach), 0.0, 1e-9);
   for (int k = 0; k < 80; ++k) rig.step();
   ASSERT_NE(rig.fsm->activePath().find("Release"), std::string::npos) << rig.fsm->activePath();
-  EXPECT_NEAR(offset().dot(across), 0.02, 1e-3);
+  EXPECT_LT(std::abs(toward), 0.01);
+  EXPECT_NEAR(offset().dot(across) - opening(), 0.02, 1e-3);
   EXPECT_NEAR(offset().dot(approach), 0.0, 1e-9);
-  EXPECT_LT(rig.ctl.pose_velocity.norm(), 1e-9);  // the hand stopped
+  // the hand stopped: only the opening's rate (0.1 m/s) is fed forward
+  EXPECT_LT((rig.ctl.pose_velocity.head<3>() - 0.5 * toward * 0.1 * across).norm(), 1e-6);
   // taken on, far: the ride stops where the ball is clear of the fingers
   rig.world.moveHand(rig.world.hand + 0.3 * across, 3.0);
   for (int k = 0; k < 120 && rig.fsm->activePath().find("Release") != std::string::npos; ++k) rig.step();
   ASSERT_NE(rig.fsm->activePath().find("Release"), std::string::npos) << rig.fsm->activePath();
-  EXPECT_NEAR(offset().dot(across), 0.042, 1e-6);
+  EXPECT_NEAR(offset().dot(across) - opening(), 0.042, 1e-6);
+  // open: the object leaving through the fingers meets a gripper that gives way (ConfirmGone)
+  for (int k = 0; k < 400 && rig.fsm->activePath().find("Release") != std::string::npos; ++k) rig.step();
+  ASSERT_NE(rig.fsm->activePath().find("ConfirmGone"), std::string::npos) << rig.fsm->activePath();
+  EXPECT_FALSE(rig.ctl.pose_gains_active);
 }
 
 // A receiver's hand that rests just past the workspace's side (inside the

@@ -1,0 +1,132 @@
+// ReleaseRide (fsm/handover/release_ride.hpp): the opening fingers make way
+// for the receiver's hand. A ball put on a palm from the side has one finger
+// between the ball and the palm; a parallel gripper opens symmetrically, so
+// without a shift that finger moves into the palm (g787_00457).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fsm/handover/release_ride.hpp"
+
+namespace handover::fsm {
+namespace release_ride_test {
+
+constexpr double kCycle = 0.001;  // s
+constexpr double kOpeningRate = 0.1;  // m/s, total finger opening rate
+
+struct Opening {
+  HandoverParams params;
+  HandoverContext ctx;
+  ReleaseRide ride;
+
+  /// TCP at the origin with the closing axis (y) along `closing`; the
+  /// receiver's hand (grip point) at `hand`; fingers at `width`.
+  Opening(const Vector3& closing, const Vector3& hand, double width) {
+    params.release_ride = true;
+    ctx.params = &params;
+    ctx.object.shape.kind = io::ObjectShape::Kind::kSphere;
+    ctx.object.shape.size = Vector3(0.026, 0.0, 0.0);
+    Isometry tcp = Isometry::Identity();
+    const Vector3 y = closing.normalized();
+    const Vector3 z = y.unitOrthogonal();
+    tcp.linear().col(0) = y.cross(z);
+    tcp.linear().col(1) = y;
+    tcp.linear().col(2) = z;
+    ctx.in.tcp_pose = tcp;
+    ctx.in.finger_width = width;
+    ctx.in.hand.valid = true;
+    ctx.in.hand.pose.translation() = hand;
+    ctx.in.object.valid = false;  // the receiver's hand is the leaving body; it stays put here
+    ride.start(ctx);
+  }
+
+  /// One cycle with the fingers opening at kOpeningRate; the set-point's offset
+  /// and rate from the release.
+  void step(Vector3& offset, Vector3& velocity) {
+    ctx.in.time += kCycle;
+    ctx.in.finger_width += kOpeningRate * kCycle;
+    ride.measure(ctx.in);
+    ride.follow(ctx.in, offset, velocity);
+  }
+};
+
+TEST(ReleaseRide, TheFingerBetweenTheObjectAndThePalmHoldsItsPlaceAsTheGripperOpens) {
+  // closing axis vertical, the palm 6.5 cm below the TCP: the lower finger
+  // sits on the palm's side
+  const Vector3 up = Vector3::UnitZ();
+  Opening r(up, Vector3(0.0, 0.0, -0.065), 0.052);
+  Vector3 offset, velocity;
+  double width = 0.0;
+  for (int k = 0; k < 200; ++k) {
+    r.step(offset, velocity);
+    width = r.ctx.in.finger_width;
+    // the lower finger: the set-point's TCP minus half the opening along the axis
+    const double lower_finger = offset.dot(up) - 0.5 * width;
+    ASSERT_NEAR(lower_finger, -0.5 * 0.052, 1e-12) << k;
+  }
+  EXPECT_NEAR(offset.dot(up), 0.5 * (width - 0.052), 1e-12);
+  EXPECT_NEAR(offset.head<2>().norm(), 0.0, 1e-12);
+  // the opening's rate fed forward, half of it on the TCP
+  EXPECT_NEAR(velocity.dot(up), 0.5 * kOpeningRate, 1e-6);
+}
+
+TEST(ReleaseRide, TheGripperOpensInPlaceWhenItsClosingAxisRunsAcrossTheLineToTheHand) {
+  // a cylinder gripped from above, the hand beside it along the approach
+  Opening r(Vector3::UnitY(), Vector3(0.0, 0.0, -0.065), 0.03);
+  Vector3 offset, velocity;
+  for (int k = 0; k < 100; ++k) r.step(offset, velocity);
+  EXPECT_LT(offset.norm(), 1e-12);
+  EXPECT_LT(velocity.norm(), 1e-12);
+}
+
+TEST(ReleaseRide, TheShiftScalesWithHowMuchTheClosingAxisPointsAtTheHand) {
+  // the hand 60 degrees off the closing axis: the set-point moves cos(60) of
+  // half the opening, along the axis, away from the hand
+  const Vector3 axis = Vector3::UnitZ();
+  const Vector3 hand = -0.07 * Vector3(std::sin(M_PI / 3.0), 0.0, std::cos(M_PI / 3.0));
+  Opening r(axis, hand, 0.04);
+  Vector3 offset, velocity;
+  for (int k = 0; k < 100; ++k) r.step(offset, velocity);
+  const double half_gained = 0.5 * (r.ctx.in.finger_width - 0.04);
+  EXPECT_NEAR(offset.dot(axis), 0.5 * half_gained, 1e-12);
+  EXPECT_NEAR((offset - offset.dot(axis) * axis).norm(), 0.0, 1e-12);
+}
+
+TEST(ReleaseRide, ClosingFingersAndAnUnseenHandMoveNothingAndTheRideCanBeSwitchedOff) {
+  {
+    Opening r(Vector3::UnitZ(), Vector3(0.0, 0.0, -0.065), 0.05);
+    Vector3 offset, velocity;
+    for (int k = 0; k < 50; ++k) {
+      r.ctx.in.time += kCycle;
+      r.ctx.in.finger_width -= kOpeningRate * kCycle;  // closing: not this state's
+      r.ride.measure(r.ctx.in);
+      r.ride.follow(r.ctx.in, offset, velocity);
+    }
+    EXPECT_LT(offset.norm(), 1e-12);
+    EXPECT_LT(velocity.norm(), 1e-12);
+  }
+  for (const bool switched_off : {true, false}) {
+    // the hand on the closing axis, but the ride switched off, or the hand unseen
+    HandoverParams params;
+    params.release_ride = !switched_off;
+    HandoverContext ctx;
+    ctx.params = &params;
+    ctx.in.finger_width = 0.05;
+    ctx.in.hand.pose.translation() = Vector3(0.0, -0.065, 0.0);
+    ctx.in.hand.valid = switched_off;
+    ReleaseRide ride;
+    ride.start(ctx);
+    Vector3 offset, velocity;
+    for (int k = 0; k < 50; ++k) {
+      ctx.in.time += kCycle;
+      ctx.in.finger_width += kOpeningRate * kCycle;
+      ride.measure(ctx.in);
+      ride.follow(ctx.in, offset, velocity);
+    }
+    EXPECT_LT(offset.norm(), 1e-12) << switched_off;
+    EXPECT_LT(velocity.norm(), 1e-12) << switched_off;
+  }
+}
+
+}  // namespace release_ride_test
+}  // namespace handover::fsm
