@@ -7,7 +7,8 @@
 // the blow spins the wrist past its velocity limit before any force is felt
 // to yield to. So the set-point moves with the object as it is seen leaving:
 // its displacement since the release, across the approach axis (along it the
-// object leaves through the fingertips, or the gripper backs away from it),
+// object leaves through the fingertips, or the gripper backs away from it;
+// pushed the other way, deeper into the gripper, it is followed back too),
 // with its velocity fed forward so that the arm does not lag D v / K behind;
 // and only as far as the object must go to be clear of the finger pads (its
 // bounding radius plus a pad's half span): beyond that the gripper has
@@ -44,6 +45,7 @@ class ReleaseRide {
     body_ = ctx.params->release_ride ? leaving(in) : Body::kNone;
     if (body_ != Body::kNone) origin_ = pose(in).translation();
     clear_ = io::boundingRadius(ctx.object.shape) + ctx.params->finger_half_span;
+    into_ = 0.0;
     width_ = in.finger_width;
     last_width_ = in.finger_width;
     last_time_ = in.time;
@@ -59,7 +61,8 @@ class ReleaseRide {
 
   /// Offset (world, m) of the set-point from where the release left it, and
   /// its rate (m/s); zero when nothing is seen.
-  void follow(const HandoverInput& in, Vector3& offset, Vector3& velocity) const {
+  /// Call once per cycle: it keeps how far the object has pushed in.
+  void follow(const HandoverInput& in, Vector3& offset, Vector3& velocity) {
     offset.setZero();
     velocity.setZero();
     // the near finger holds its place as the fingers open (never back: a
@@ -75,7 +78,19 @@ class ReleaseRide {
     const Vector3 across = moved - moved.dot(axis_) * axis_;
     const double n = across.norm();
     offset += n > clear_ ? (clear_ / n) * across : across;
-    if (n <= clear_) velocity += b.velocity.head<3>() - b.velocity.head<3>().dot(axis_) * axis_;
+    const Vector3 v = b.velocity.head<3>();
+    const bool between = n <= clear_;
+    if (between) velocity += v - v.dot(axis_) * axis_;
+    // pushed into the gripper (against the approach axis) while it is still
+    // between the fingers, it is followed back as far as it goes: the palm
+    // has no clearance to let it by (a receiver lifting a key fob off the
+    // fingers raised their palm into the fingertips of a gripper held
+    // stiffly where it was, o_31); once clear of the pads it leaves no more
+    // room to make, and the set-point keeps what it made
+    const double along = moved.dot(axis_);
+    if (between && along < into_) into_ = along;
+    offset += into_ * axis_;
+    if (between && along <= into_) velocity += std::min(0.0, v.dot(axis_)) * axis_;
   }
 
   /// Measures how fast the fingers open (call every cycle, before follow()).
@@ -118,6 +133,7 @@ class ReleaseRide {
   double clear_ = 0.0;  ///< m, how far the object goes before it is clear of the fingers
   static constexpr double kRateTime = 0.01;  ///< s, smoothing of the opening rate
   double width_ = 0.0;  ///< m, the finger opening at the release
+  double into_ = 0.0;   ///< m (<= 0), farthest the object went into the gripper while between the fingers
   double last_width_ = 0.0, last_time_ = 0.0;  ///< m, s: the previous cycle's
   double opening_rate_ = 0.0;                  ///< m/s, smoothed, >= 0
   /// unit closing axis (world) scaled by the cosine of its angle to the

@@ -63,12 +63,21 @@ TEST(HandoverR2H, FingersBackOutAlongTheApproachAxisBeforeTurningAway) {
   EXPECT_LT(rotationError(rig.ctl.pose, at_release), 1e-6);
   auto backed = [&] { return -(rig.ctl.pose.translation() - at_release.translation()).dot(approach); };
   EXPECT_LT(backed(), 0.002);  // starts where the fingers let go
-  while (rig.world.time - t0 < 0.15) rig.step();
-  EXPECT_NEAR(backed(), 0.04, 0.004);                               // half way at half time
+  // the leaving object pushed up into the gripper while still between the
+  // fingers is followed back as well (release_ride.hpp): measured here
+  const Vector3 object0 = rig.world.object;
+  const double clear = io::boundingRadius(rig.fsm->context().object.shape) + rig.fsm->params().finger_half_span;
+  double pushed_in = 0.0;
+  while (rig.world.time - t0 < 0.15) {
+    rig.step();
+    const Vector3 moved = rig.world.object - object0;
+    if ((moved - moved.dot(approach) * approach).norm() <= clear) pushed_in = std::max(pushed_in, -moved.dot(approach));
+  }
+  EXPECT_NEAR(backed() - pushed_in, 0.04, 0.004);                   // half way at half time
   EXPECT_NEAR(-rig.ctl.pose_velocity.head<3>().dot(approach), 0.5, 0.05);  // 1.875 * 0.08 / 0.3 m/s
   while (rig.world.time - t0 < 0.35 && rig.fsm->activePath().find("BackOut") != std::string::npos) rig.step();
   if (rig.fsm->activePath().find("BackOut") != std::string::npos) {
-    EXPECT_NEAR(backed(), 0.08, 1e-6);
+    EXPECT_NEAR(backed() - pushed_in, 0.08, 2e-3);
   }
   ASSERT_TRUE(rig.runUntilState("Retract", 5.0)) << rig.fsm->activePath();
   const Vector3 moved = rig.world.tcp.translation() - at_release.translation();

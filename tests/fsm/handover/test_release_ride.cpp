@@ -128,5 +128,50 @@ TEST(ReleaseRide, ClosingFingersAndAnUnseenHandMoveNothingAndTheRideCanBeSwitche
   }
 }
 
+TEST(ReleaseRide, AnObjectPushedIntoTheGripperIsFollowedBackAndOneLeavingThroughTheFingertipsIsNot) {
+  // approach axis z: the object leaves through the fingertips toward +z
+  HandoverParams params;
+  params.release_ride = true;
+  HandoverContext ctx;
+  ctx.params = &params;
+  ctx.object.shape.kind = io::ObjectShape::Kind::kBox;
+  ctx.object.shape.size = Vector3(0.07, 0.03, 0.012);
+  ctx.in.finger_width = 0.03;
+  ctx.in.hand.valid = true;
+  ctx.in.hand.pose.translation() = Vector3(0.0, 0.0, 0.05);  // along the approach: no opening shift
+  ctx.in.object.valid = true;
+  const Vector3 start(0.0, 0.0, 0.01);
+  const double clear = io::boundingRadius(ctx.object.shape) + params.finger_half_span;
+  Vector3 offset, velocity;
+  {
+    // leaving through the fingertips: the gripper holds along the approach
+    ctx.in.object.pose.translation() = start;
+    ReleaseRide ride;
+    ride.start(ctx);
+    ctx.in.object.pose.translation() = start + Vector3(0.0, 0.0, 0.03);
+    ctx.in.object.velocity.head<3>() = Vector3(0.0, 0.0, 0.3);
+    ride.follow(ctx.in, offset, velocity);
+    EXPECT_LT(offset.norm(), 1e-12);
+    EXPECT_LT(velocity.norm(), 1e-12);
+  }
+  ctx.in.object.pose.translation() = start;
+  ReleaseRide ride;
+  ride.start(ctx);
+  // pushed 3 cm up into the gripper while across by less than the pads' clearance
+  ctx.in.object.pose.translation() = start + Vector3(0.5 * clear, 0.0, -0.03);
+  ctx.in.object.velocity.head<3>() = Vector3(0.1, 0.0, -0.2);
+  ride.follow(ctx.in, offset, velocity);
+  EXPECT_NEAR(offset.z(), -0.03, 1e-12);  // followed back all the way
+  EXPECT_NEAR(velocity.z(), -0.2, 1e-12);
+  EXPECT_NEAR(offset.x(), 0.5 * clear, 1e-12);
+  // out across, clear of the pads, and further in: nothing more to make way
+  // for, and the set-point keeps the way it made (no step back toward it)
+  ctx.in.object.pose.translation() = start + Vector3(2.0 * clear, 0.0, -0.06);
+  ride.follow(ctx.in, offset, velocity);
+  EXPECT_NEAR(offset.z(), -0.03, 1e-12);
+  EXPECT_NEAR(offset.x(), clear, 1e-12);
+  EXPECT_NEAR(velocity.z(), 0.0, 1e-12);
+}
+
 }  // namespace release_ride_test
 }  // namespace handover::fsm
