@@ -13,26 +13,49 @@ namespace {
 constexpr double kMinClearance = 0.001;
 }  // namespace
 
-double holdDepth(const io::ObjectShape& shape, const Isometry& grasp_in_object, double friction) {
-  if (!shape.known() || !(friction > 0.0)) return 0.0;
-  const Vector3 p = grasp_in_object.translation();
-  const Vector3 a = grasp_in_object.linear().col(2), c = grasp_in_object.linear().col(1);
-  const double near_face = io::exitDistance(shape, p, -a);
-  if (!(near_face > 0.0)) return 0.0;
-  // half the chord across the closing axis where the pads meet the object at depth s
-  const auto half_width = [&](double s) {
+namespace {
+// The object's section along the grasp line: the near face's depth behind the grasp point and
+// half the chord across the closing axis at depth s from it (s >= 0 into the object).
+struct GraspLine {
+  const io::ObjectShape& shape;
+  Vector3 p, a, c;
+  double near_face;
+  GraspLine(const io::ObjectShape& sh, const Isometry& grasp_in_object)
+      : shape(sh),
+        p(grasp_in_object.translation()),
+        a(grasp_in_object.linear().col(2)),
+        c(grasp_in_object.linear().col(1)),
+        near_face(io::exitDistance(sh, p, -a)) {}
+  double halfWidth(double s) const {
     const Vector3 q = p - a * (near_face - s);
     return 0.5 * (io::exitDistance(shape, q, c) + io::exitDistance(shape, q, -c));
-  };
-  constexpr int kMaxSteps = 400;
-  const double step = std::max(5e-4, near_face / kMaxSteps);
-  double w = half_width(step);
-  for (double s = step; s + step <= near_face + 1e-12; s += step) {
-    const double next = half_width(s + step);
+  }
+  double step() const { return std::max(5e-4, near_face / 400.0); }  // at most 400 steps to the grasp point
+};
+}  // namespace
+
+double holdDepth(const io::ObjectShape& shape, const Isometry& grasp_in_object, double friction) {
+  if (!shape.known() || !(friction > 0.0)) return 0.0;
+  const GraspLine line(shape, grasp_in_object);
+  if (!(line.near_face > 0.0)) return 0.0;
+  const double step = line.step();
+  double w = line.halfWidth(step);
+  for (double s = step; s + step <= line.near_face + 1e-12; s += step) {
+    const double next = line.halfWidth(s + step);
     if (next - w <= friction * step) return s;
     w = next;
   }
-  return near_face;
+  return line.near_face;
+}
+
+double depthOfWidth(const io::ObjectShape& shape, const Isometry& grasp_in_object, double width) {
+  if (!shape.known()) return -1.0;
+  const GraspLine line(shape, grasp_in_object);
+  if (!(line.near_face > 0.0)) return -1.0;
+  const double step = line.step();
+  for (double s = step; s <= line.near_face + 1e-12; s += step)
+    if (2.0 * line.halfWidth(s) >= width) return s;
+  return -1.0;
 }
 
 double HoldDepthCache::get(const io::ObjectShape& shape, const Isometry& grasp_in_object, double friction) {

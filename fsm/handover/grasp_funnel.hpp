@@ -55,6 +55,14 @@ struct FingerFit {
 /// enough. Frames: the object's; units m. RT safe (a scan of at most 400 steps).
 double holdDepth(const io::ObjectShape& shape, const Isometry& grasp_in_object, double friction);
 
+/// m: the shallowest depth from the object's near face, along the grasp's
+/// approach axis on the grasp line, at which the object is `width` (m) wide
+/// across the closing axis: where fingers that closed to `width` hold it,
+/// if they hold it on the near side. -1 when the object is nowhere that wide
+/// up to the grasp point (or its shape is unknown). Frames: the object's;
+/// units m. RT safe (a scan of at most 400 steps).
+double depthOfWidth(const io::ObjectShape& shape, const Isometry& grasp_in_object, double width);
+
 /// holdDepth for a grasp that changes rarely (a new choice, a touch's
 /// correction), as the 1 ms step needs it: the scan is redone only when the
 /// grasp moved in the object frame by more than 1 mm or 0.02 rad, or the

@@ -280,6 +280,8 @@ void Grasp::configure(const YamlReader& def) {
     jam_force_ = readRange(def, "jam_force", 1.0, 1000.0);
     jam_time_ = readRange(def, "jam_time", 0.0, 2.0);
   }
+  if (def.has("regrips")) max_regrips_ = static_cast<int>(readRange(def, "regrips", 0.0, 5.0));
+  if (def.has("release_distance")) release_distance_ = readRange(def, "release_distance", 0.0, 0.3);
 }
 
 void Grasp::onStart(HandoverContext& ctx) {
@@ -292,6 +294,8 @@ void Grasp::onStart(HandoverContext& ctx) {
   touch_felt_ = false;
   jam_since_ = -1.0;
   touch_shift_.setZero();
+  regrips_ = 0;
+  reopening_ = false;
   if (funnel_.acceleration > 0.0) {
     // the slide goes on from where the approach left it, at its rate (fed forward): a
     // jump of the target to the funnel's goal left the TCP to the PD's slow tail
@@ -363,7 +367,36 @@ bool Grasp::jammed(const HandoverContext& ctx) {
   return ctx.time - jam_since_ >= jam_time_;
 }
 
+bool Grasp::regrip(HandoverContext& ctx) {
+  if (regrips_ >= max_regrips_ || !hand_at_close_known_ || !fresh(ctx.in.hand, ctx.params->max_data_age) ||
+      (ctx.in.hand.pose.translation() - hand_at_close_).norm() > release_distance_)
+    return false;  // the person may have let go: opening now would drop it
+  const FingerFit f = fitNow(ctx);
+  if (f.near_face > 1e6 || !(f.hold_depth > 0.0)) return false;
+  Isometry object = ctx.in.observed_pose;
+  object.translation() += object.linear() * touch_shift_;
+  const Isometry grasp = correctedGraspFrame(ctx);
+  // where the object is as wide as the fingers closed: there the pads' tips are
+  const double tips = depthOfWidth(ctx.object.shape, object.inverse() * grasp, ctx.in.finger_width);
+  if (tips < 0.0 || tips >= f.hold_depth) return false;
+  ++regrips_;
+  // in by the shortfall: the tips to where the grasp puts them (the near face, then pad_reach on)
+  const double shortfall = f.near_face + ctx.params->finger_pad_reach - tips;
+  regrip_shift_ = object.linear().transpose() * (shortfall * grasp.linear().col(2));
+  reopening_ = true;
+  closing_ = false;
+  ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
+  return true;
+}
+
 bool Grasp::onRun(HandoverContext& ctx) {
+  if (reopening_) {
+    // the fingers off the object before the grasp moves in (closed, they would drag it along)
+    if (ctx.in.finger_width < ctx.params->gripper_open_width - 0.005) return false;
+    reopening_ = false;
+    touch_shift_ += regrip_shift_;
+    setStandoff(ctx, ctrl(), false, ctx.tracking_standoff, touch_shift_);
+  }
   if (!closing_) {
     if (withdrawal_.withdrawn(ctx, false)) {
       setOutput(withdrawn_);
@@ -408,6 +441,8 @@ bool Grasp::onRun(HandoverContext& ctx) {
     closed_at_ = last_time_ = ctx.time;
     last_width_ = ctx.in.finger_width;
     finger_speed_ = 1e9;
+    hand_at_close_known_ = fresh(ctx.in.hand, ctx.params->max_data_age);
+    if (hand_at_close_known_) hand_at_close_ = ctx.in.hand.pose.translation();
     return false;
   }
   // the person takes it back as the fingers close (WaitForRelease's rule): let them. And
@@ -428,7 +463,9 @@ bool Grasp::onRun(HandoverContext& ctx) {
     last_time_ = ctx.time;
   }
   if (ctx.time - closed_at_ < confirm_time_ || finger_speed_ > stall_speed_) return false;
-  setOutput(ctx.in.finger_width > ctx.params->gripper_empty_width ? grasped_ : missed_);
+  const bool holds = ctx.in.finger_width > ctx.params->gripper_empty_width;
+  if (holds && regrip(ctx)) return false;
+  setOutput(holds ? grasped_ : missed_);
   return true;
 }
 

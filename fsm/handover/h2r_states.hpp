@@ -159,6 +159,15 @@ class Approach : public HandoverState {
 /// back that hard for that long is jammed against the object (it struck the
 /// palm or the fingers' base, no correction frees it): Missed, the gripper
 /// backs off open instead of pressing on into it.
+/// Felt again once closed: the width the fingers stopped at locates them on
+/// the object's section (depthOfWidth). Narrower than the object is at its
+/// hold depth (FingerFit::hold_depth), they pinch a round side short of it
+/// (a bottle lying across them, seen 3 cm off by a calibration error, rolled
+/// out of a 5.0 cm pinch of its 6.6 cm): while the person still holds the
+/// object (their hand has not moved from it by release_distance), the
+/// fingers open, the grasp moves along the approach axis by as much as the
+/// pads fell short, and they close again. regrips (optional, default 0) times
+/// per attempt; release_distance (m, default 0.015).
 class Grasp : public HandoverState {
  public:
   Grasp();
@@ -178,6 +187,9 @@ class Grasp : public HandoverState {
   /// The open gripper pushed back along its approach axis by at least
   /// jam_force for jam_time. RT safe.
   bool jammed(const HandoverContext& ctx);
+  /// Closed short of the object's hold depth while the person still holds it:
+  /// opens and moves the grasp in by the shortfall; true when it did. RT safe.
+  bool regrip(HandoverContext& ctx);
 
   int grasped_, missed_, withdrawn_;
   mutable HoldDepthCache hold_depth_;  ///< the object's hold depth for the grasp now (fitNow): one scan per grasp
@@ -197,6 +209,13 @@ class Grasp : public HandoverState {
   double jam_time_ = 0.2;        ///< s, for this long
   double jam_since_ = -1.0;      ///< s, the jam's push began; < 0: none
   Vector3 touch_shift_ = Vector3::Zero();  ///< m, the grasp's correction, object frame
+  int max_regrips_ = 0;
+  int regrips_ = 0;
+  double release_distance_ = 0.015;  ///< m the hand moves off the object when it lets go
+  bool reopening_ = false;           ///< a regrip: the fingers open before the grasp moves in
+  Vector3 regrip_shift_ = Vector3::Zero();  ///< m, object frame, applied once they are open
+  Vector3 hand_at_close_ = Vector3::Zero(); ///< m, world: the hand when the fingers closed (it stays: it holds on)
+  bool hand_at_close_known_ = false;
   TakeBack pull_;                ///< while closing
   WithdrawalWatch withdrawal_;   ///< before closing: the person leaves
 };

@@ -22,11 +22,17 @@
 // - a low box taken from the side: the approach followed the tracking
 //   task's gradient until joint 6 sat at its limit short of the pre-grasp,
 //   and the person gave up; the stalled approach now goes on in joint space
-//   to the planner's configuration (fsm/handover/stall_recovery.hpp).
+//   to the planner's configuration (fsm/handover/stall_recovery.hpp);
+// - a bottle lying sideways under a calibration error (1 cm, 5 degrees): the
+//   fingers closed 3 cm short of its axis on a 5.0 cm chord of its 6.6 cm,
+//   and it rolled out of the pinch while the person still held it. The width
+//   the fingers closed to now tells how far short they are; they open, go in
+//   by that much and close again (fsm/handover/h2r_states.hpp Grasp).
 #include <gtest/gtest.h>
 
 #include <string>
 
+#include "app/report/summary_text.hpp"
 #include "tests/app/run/run_repo_file.hpp"
 
 namespace handover {
@@ -55,6 +61,15 @@ TEST(TakeGeometry, AnApproachStalledAtAJointLimitGoesOnInJointSpace) {
 
 TEST(TakeGeometry, ATallBoxHeldFarByItsMiddleIsTakenByItsFreeEnd) {
   testing::expectSuccessAtTheFirstAttempt("tall_box_middle", "h2r_tall_box_held_by_its_middle.yaml", "/Approach");
+}
+
+TEST(TakeGeometry, FingersThatPinchARoundSideShortOfItsAxisGraspAgainDeeper) {
+  const testing::ScratchDir dir("bottle_pinched_short");
+  const app::RunSummary r = testing::runRepoFile(dir, "tests/app/run/data/h2r_bottle_pinched_short.yaml");
+  EXPECT_EQ(r.outcome, "success") << app::formatSummary(r);
+  EXPECT_FALSE(r.object_dropped);
+  EXPECT_EQ(testing::stateVisits(r, "/Grasp"), 1) << "the regrip is inside the one grasp";
+  EXPECT_EQ(r.human_contacts, 0);
 }
 
 }  // namespace

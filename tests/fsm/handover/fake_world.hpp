@@ -159,6 +159,7 @@ struct World {
   bool graspable = true;     // false: fingers close on nothing
   double width = 0.08;
   double object_width = 0.04;
+  double grip_reach = 0.015;  // m: the fingers stop on the object with the TCP this near its centre
   Vector3 object = Vector3::Zero();
   double mass = 0.3;
   Vector3 pull = Vector3::Zero();   // force of a pulling person, while both hold
@@ -230,7 +231,7 @@ struct World {
     tcp.translation() += v * kDt;
     tcp.linear() = d.linear();
     // gripper fingers at 0.1 m/s, stopped by the object if it is between them
-    const bool between = graspable && (object - tcp.translation()).norm() < 0.015;
+    const bool between = graspable && (object - tcp.translation()).norm() < grip_reach;
     const double target = c.gripper_width;
     const double dw = std::max(-0.1 * kDt, std::min(0.1 * kDt, target - width));
     width += dw;

@@ -270,6 +270,28 @@ TEST(GraspFunnel, ARoundSideHoldsOnlyFromTheDepthWhereItsSlopeIsTheFriction) {
   EXPECT_DOUBLE_EQ(holdDepth(sphere(0.04), Isometry::Identity(), 0.0), 0.0);
 }
 
+// The width the fingers closed to locates them on the object's section: a bottle of radius
+// 33 mm lying across them, pinched 5.0 cm wide (s_21: 3 cm short of its axis), is held 1.15 cm
+// into it, short of its hold depth; closed to its diameter they hold it at its axis.
+TEST(GraspFunnel, TheWidthTheFingersClosedToTellsHowDeepTheyHoldARoundSide) {
+  constexpr double kStep = 5e-4, r = 0.033;
+  Isometry across = Isometry::Identity();
+  across.linear() = Eigen::AngleAxisd(M_PI / 2, Vector3::UnitY()).toRotationMatrix();
+  const io::ObjectShape bottle = cylinder(r, 0.22);
+  for (double w : {0.01, 0.03, 0.05, 0.06}) {
+    const double expected = r - std::sqrt(r * r - 0.25 * w * w);
+    EXPECT_NEAR(depthOfWidth(bottle, across, w), expected, 2 * kStep) << w;
+  }
+  EXPECT_LT(depthOfWidth(bottle, across, 0.050), holdDepth(bottle, across, 0.5));
+  EXPECT_GT(depthOfWidth(bottle, across, 0.065), holdDepth(bottle, across, 0.5));
+  EXPECT_NEAR(depthOfWidth(bottle, across, 2 * r - 1e-6), r, 2 * kStep);
+  // wider than it is anywhere up to the grasp point (fingers on something else): unknown
+  EXPECT_LT(depthOfWidth(bottle, across, 2 * r + 0.002), 0.0);
+  // a box face on is as wide as it is from its face on
+  EXPECT_LE(depthOfWidth(box(0.06, 0.05, 0.2), Isometry::Identity(), 0.05), 2 * kStep);
+  EXPECT_LT(depthOfWidth(io::ObjectShape{}, across, 0.05), 0.0);
+}
+
 // The 1 ms step scans once per grasp: a grasp that stays (within noise) reads the last scan,
 // one that moves (a new choice, a touch's correction) or another shape is scanned again.
 TEST(GraspFunnel, TheHoldDepthIsScannedAgainOnlyForAnotherGrasp) {

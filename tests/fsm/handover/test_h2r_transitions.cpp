@@ -233,6 +233,57 @@ TEST(HandoverH2R, AFingertipFeltOnTheObjectMovesTheGraspTowardIt) {
   EXPECT_NEAR((light.world.objectPose().linear() * light.ctl.offset.translation()).dot(closing), light_before, 1e-9);
 }
 
+// The fingers closed to 5.0 cm on a ball 6.6 cm across: they pinch it 1.15 cm into its side,
+// short of where its slope holds (0.55 r; a bottle seen 3 cm off rolled out of such a pinch, s_21).
+// While the person still holds it the fingers open, the grasp moves in along the approach axis
+// by the shortfall (the tips 3.1 cm deeper: to 0.95 cm past its centre), and they close again;
+// once (regrips: 1), then the grasp stands. A person whose hand moved off is not let go of.
+TEST(HandoverH2R, FingersClosedShortOfWhereARoundSideHoldsOpenAndGraspDeeper) {
+  io::ObjectShape ball;
+  ball.kind = io::ObjectShape::Kind::kSphere;
+  ball.size = Vector3(0.033, 0.0, 0.0);
+  const auto closes = [&](Rig& rig) {
+    rig.world.moveHand(kMeet, 0.5);
+    EXPECT_TRUE(rig.runUntilState("Grasp", 10.0));
+    rig.world.object_width = 0.05;  // a chord: the pads meet its side short of its axis
+    rig.world.grip_reach = 0.05;    // the fingers stop on it also where the grasp moved in
+    return rig.runUntil([&] { return rig.ctl.count("gripper 0.00") > 0; }, 5.0);
+  };
+  Rig rig(false, false, ball);
+  ASSERT_TRUE(closes(rig));
+  const Vector3 approach = rig.world.tcp.linear().col(2);
+  const auto depth = [&] { return (rig.world.objectPose().linear() * rig.ctl.offset.translation()).dot(approach); };
+  const double before = depth();
+  ASSERT_TRUE(rig.runUntil([&] { return rig.ctl.count("gripper 0.08") > 1; }, 1.0));  // opens again
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Grasp"));
+  EXPECT_NEAR(depth(), before, 1e-9);  // the grasp moves only once the fingers are off the ball
+  ASSERT_TRUE(rig.runUntil([&] { return std::abs(depth() - before) > 1e-6; }, 1.0));
+  const double r = 0.033, tips = r - std::sqrt(r * r - 0.025 * 0.025);
+  EXPECT_NEAR(depth() - before, r + 0.0095 - tips, 1e-3);
+  EXPECT_GT(rig.world.width, 0.07);  // open (within 5 mm) when it moved
+  // closes again, on the same chord: no second regrip, the grasp stands
+  ASSERT_TRUE(rig.runUntil([&] { return rig.ctl.count("gripper 0.00") > 1; }, 3.0));
+  EXPECT_TRUE(rig.runUntilState("WaitForRelease", 2.0)) << rig.fsm->activePath();
+  EXPECT_EQ(rig.ctl.count("gripper 0.00"), 2);
+
+  // a hand that moved off the ball (2 cm) as the fingers closed may have let go: no regrip
+  Rig left(false, false, ball);
+  ASSERT_TRUE(closes(left));
+  left.world.object_in_hand += Vector3(0.0, 0.0, -0.02);  // the ball stays, the hand moves off it
+  left.world.hand += Vector3(0.0, 0.0, 0.02);
+  left.world.hand_goal = left.world.hand;
+  EXPECT_TRUE(left.runUntilState("WaitForRelease", 2.0)) << left.fsm->activePath();
+  EXPECT_EQ(left.ctl.count("gripper 0.00"), 1);
+
+  // closed to the ball's whole width: held, no regrip
+  Rig full(false, false, ball);
+  full.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(full.runUntilState("Grasp", 10.0));
+  full.world.object_width = 0.065;
+  EXPECT_TRUE(full.runUntilState("WaitForRelease", 5.0)) << full.fsm->activePath();
+  EXPECT_EQ(full.ctl.count("gripper 0.00"), 1);
+}
+
 // A tracked hand that jumped up shoved the bottle into the open gripper's palm; pressing on
 // into it, the wrist was rolled against joint 6's limit for seconds (2000 position-limit steps).
 // Pushed back hard for jam_time (config/fsm.yaml: 20 N, 0.2 s), the grasp is missed and the
