@@ -316,9 +316,14 @@ Isometry Grasp::correctedGraspFrame(const HandoverContext& ctx) const {
   return g;
 }
 
-FingerFit Grasp::fitNow(const HandoverContext& ctx) const {
+Isometry Grasp::correctedObject(const HandoverContext& ctx) const {
   Isometry object = ctx.in.observed_pose;
   object.translation() += object.linear() * touch_shift_;
+  return object;
+}
+
+FingerFit Grasp::fitNow(const HandoverContext& ctx) const {
+  const Isometry object = correctedObject(ctx);
   const Isometry grasp = correctedGraspFrame(ctx);
   FingerFit f = fitFor(ctx, object, grasp);
   f.hold_depth = hold_depth_.get(ctx.object.shape, object.inverse() * grasp, ctx.params->grip_friction);
@@ -373,8 +378,7 @@ bool Grasp::regrip(HandoverContext& ctx) {
     return false;  // the person may have let go: opening now would drop it
   const FingerFit f = fitNow(ctx);
   if (f.near_face > 1e6 || !(f.hold_depth > 0.0)) return false;
-  Isometry object = ctx.in.observed_pose;
-  object.translation() += object.linear() * touch_shift_;
+  const Isometry object = correctedObject(ctx);
   const Isometry grasp = correctedGraspFrame(ctx);
   // where the object is as wide as the fingers closed: there the pads' tips are
   const double tips = depthOfWidth(ctx.object.shape, object.inverse() * grasp, ctx.in.finger_width);
@@ -392,7 +396,8 @@ bool Grasp::regrip(HandoverContext& ctx) {
 bool Grasp::onRun(HandoverContext& ctx) {
   if (reopening_) {
     // the fingers off the object before the grasp moves in (closed, they would drag it along)
-    if (ctx.in.finger_width < ctx.params->gripper_open_width - 0.005) return false;
+    constexpr double kOpenTolerance = 0.005;  // m: the width reading settles this near the opening
+    if (ctx.in.finger_width < ctx.params->gripper_open_width - kOpenTolerance) return false;
     reopening_ = false;
     touch_shift_ += regrip_shift_;
     setStandoff(ctx, ctrl(), false, ctx.tracking_standoff, touch_shift_);

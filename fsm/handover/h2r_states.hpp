@@ -181,6 +181,8 @@ class Grasp : public HandoverState {
   double closingTime(const HandoverContext& ctx, const FingerFit& f) const;
   /// The grasp frame corrected by what the fingers felt (world).
   Isometry correctedGraspFrame(const HandoverContext& ctx) const;
+  /// The observed object moved as that correction moved the grasp (world).
+  Isometry correctedObject(const HandoverContext& ctx) const;
   /// A fingertip on the object: corrects the grasp toward it; true when it
   /// did. `f`: the fit before. RT safe.
   bool feelTouch(HandoverContext& ctx, const FingerFit& f);
