@@ -81,16 +81,35 @@ FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry&
   f.clearance = std::max(kMinClearance, 0.5 * (opening - width));
   // the object's mid-plane across the fingers: where the grasp puts it (0 for
   // a grasp through the centre), moved by the TCP's lateral error
-  const double mid_plane = (object.translation() - grasp.translation()).dot(grasp_closing) +
-                           (grasp.translation() - tcp.translation()).dot(tcp.linear().col(1));
+  f.mid_plane = (object.translation() - grasp.translation()).dot(grasp_closing) +
+                (grasp.translation() - tcp.translation()).dot(tcp.linear().col(1));
   // the turn between the fingers and the grasp, about the axes across the closing axis (TCP frame)
   const Eigen::AngleAxisd rel(tcp.linear().transpose() * grasp.linear());
   const Vector3 turn = rel.angle() * rel.axis();
   const double widening = finger_half_span * std::hypot(turn.x(), turn.z());
-  f.fit = f.clearance - std::abs(mid_plane) - widening;
+  f.fit = f.clearance - std::abs(f.mid_plane) - widening;
   const Isometry grasp_in_object = object.inverse() * grasp;
   f.near_face = io::exitDistance(shape, grasp_in_object.translation(), -grasp_in_object.linear().col(2));
   return f;
+}
+
+void budgetMotion(FingerFit& f, const Isometry& grasp, const Vector3& velocity, const Vector3& tcp_velocity,
+                  double speed_std, double horizon, double significance) {
+  if (!(horizon > 0.0) || f.clearance > 1e6) return;  // unknown shape: no fit to budget
+  const double noise = significance * std::max(0.0, speed_std);
+  const auto beyondNoise = [noise](double v) { return std::copysign(std::max(0.0, std::abs(v) - noise), v); };
+  // across the fingers: where the object's mid-plane is by the time the arm knows it (the TCP is
+  // where it is; the object has moved on by its own way)
+  const double drift = beyondNoise(velocity.dot(grasp.linear().col(1))) * horizon;
+  f.fit += std::abs(f.mid_plane) - std::abs(f.mid_plane + drift);
+  f.mid_plane += drift;
+  // toward the palm (against the approach axis, which points from the palm to the object)
+  const Vector3 approach = grasp.linear().col(2);
+  const double coming = std::max(0.0, -beyondNoise(velocity.dot(approach)));
+  // coming: the gap closes at the speed between the two, the arm's own way in (which takes it as
+  // long to undo) adding to the object's, its way back (following the object) taking from it
+  f.closing_speed = coming > 0.0 ? std::max(0.0, coming + tcp_velocity.dot(approach)) : 0.0;
+  f.lead = f.closing_speed * horizon;
 }
 
 double padDepth(const FingerFit& f, double along, double pad_reach) { return along + pad_reach + f.near_face; }
@@ -114,7 +133,7 @@ bool holdsWhenClosed(const FingerFit& f, double along, double pad_reach) {
 
 double funnelStandoff(const FingerFit& f, double max_standoff, double margin) {
   const double enclosed = margin > 0.0 ? std::clamp(f.fit / (margin * f.clearance), 0.0, 1.0) : (f.fit > 0.0 ? 1.0 : 0.0);
-  return max_standoff * (1.0 - enclosed);
+  return max_standoff * (1.0 - enclosed) + f.lead;
 }
 
 double GraspFunnel::mouth(const FingerFit& f, double pad_reach) const {
@@ -122,13 +141,20 @@ double GraspFunnel::mouth(const FingerFit& f, double pad_reach) const {
   return std::min(max_standoff, f.near_face + pad_reach + mouth_clearance);
 }
 
-GraspFunnel::Slide GraspFunnel::step(double standoff, double rate, double goal, double time) {
-  Slide s = profile(standoff, rate, goal, time);
+double GraspFunnel::lineUp(const FingerFit& f, double pad_reach) const {
+  if (!(f.lead > 0.0)) return max_standoff;
+  if (mouth_clearance < 0.0 || !(f.near_face > 0.0) || f.near_face > 1e6) return max_standoff + f.lead;
+  return std::max(max_standoff, f.near_face + pad_reach + mouth_clearance + f.lead);
+}
+
+GraspFunnel::Slide GraspFunnel::step(double standoff, double rate, double goal, double time, double extra_speed) {
+  Slide s = profile(standoff, rate, goal, time, goal > standoff ? std::max(0.0, extra_speed) : 0.0);
   if (!feed_forward) s.rate = s.acceleration = 0.0;
   return s;
 }
 
-GraspFunnel::Slide GraspFunnel::profile(double standoff, double rate, double goal, double time) {
+GraspFunnel::Slide GraspFunnel::profile(double standoff, double rate, double goal, double time, double extra_speed) {
+  const double speed = this->speed + extra_speed;
   const double dt = std::max(0.0, time - last_time);
   last_time = time;
   Slide s;

@@ -33,6 +33,9 @@ struct FingerFit {
   /// m: the room per side at perfect alignment with the grasp frame
   /// (opening minus the object's width across the grasp's fingers, halved).
   double clearance = 1e9;
+  /// m: the object's mid-plane from the fingers' along the closing axis (TCP
+  /// y), signed; the fit loses its magnitude.
+  double mid_plane = 0.0;
   /// m: the object behind the grasp point, back along the approach axis to
   /// its surface (the depth the pads can close on when the TCP is at the
   /// grasp; from the shape). Large when the shape is unknown.
@@ -41,6 +44,13 @@ struct FingerFit {
   /// meet the object for their squeeze to hold it (holdDepth, which fingerFit
   /// leaves to its caller: the scan is for once per grasp); 0: not asked.
   double hold_depth = 0.0;
+  /// m: how far the object comes toward the palm along the approach axis
+  /// within the motion horizon (budgetMotion; 0 for one at rest or leaving):
+  /// the standoff keeps it on top of the funnel's.
+  double lead = 0.0;
+  /// m/s: how fast the gap to an object that comes toward the palm closes
+  /// (0: at rest or leaving): the funnel backs out at least this much faster.
+  double closing_speed = 0.0;
 };
 
 /// m: the depth from the object's near face, along the grasp's approach axis
@@ -103,9 +113,34 @@ bool holdsWhenClosed(const FingerFit& f, double along, double pad_reach);
 FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry& grasp, const io::ObjectShape& shape,
                     double opening, double finger_half_span);
 
+/// The fit `f` (for `grasp`, world) of an object that moves at `velocity`
+/// (m/s, world: its estimate), each component known to `speed_std` (m/s),
+/// the TCP moving at `tcp_velocity` (m/s, world). The arm meets the object's
+/// motion only `horizon` (s) after it began: the observed object lags the
+/// estimate by the observation's D / K, the estimate lags a sample, the
+/// tracking lags its target. So:
+/// - across the fingers the fit is taken where the object's mid-plane is by
+///   then, moved on by its own way within the horizon, the TCP where it is.
+///   Not the way relative to the TCP: an arm that follows the late estimate
+///   is where the object was (tried on a cylinder withdrawn sideways from
+///   under fingers around its top: 22 velocity-limit steps instead of 6);
+/// - an object that comes toward the palm closes the gap at the speed
+///   between it and the TCP along the approach axis (an arm on its way in
+///   takes as long to turn back; one that already backs away with it takes
+///   that off): that speed times horizon is the lead the standoff keeps (a
+///   ball brought on at 0.6 m/s into a gripper on its way to it struck the
+///   palm at 1.4 kN: the mouth's 2 cm were gone in 20 ms). The TCP's own way
+///   in counts only then: onto an object at rest it slides at its set speed.
+/// A component of the object's velocity within `significance` standard
+/// deviations of 0 counts as 0 (a hand at rest reads its noise as speed).
+/// RT safe.
+void budgetMotion(FingerFit& f, const Isometry& grasp, const Vector3& velocity, const Vector3& tcp_velocity,
+                  double speed_std, double horizon, double significance);
+
 /// Standoff (m) along the approach axis for this fit: max_standoff while the
 /// object does not fit, 0 once the fit keeps `margin` (a fraction of the
-/// clearance) to spare, linear between.
+/// clearance) to spare, linear between; plus the fit's lead (an object
+/// coming toward the palm).
 double funnelStandoff(const FingerFit& f, double max_standoff, double margin);
 
 /// The funnel over time: the standoff moves toward funnelStandoff at no more
@@ -127,6 +162,10 @@ struct GraspFunnel {
   /// m the fingertips wait in front of the object's near face at the funnel's
   /// mouth (< 0: the mouth is max_standoff whatever the object)
   double mouth_clearance = -1.0;
+  /// s the arm meets the object's motion late by (budgetMotion; 0: the fit
+  /// of an object at rest whatever it does)
+  double motion_horizon = 0.0;
+  double motion_significance = 2.0;  ///< standard deviations of a speed that are still noise
   double last_time = 0.0;     ///< s, the last step
 
   /// One step of the slide.
@@ -144,15 +183,25 @@ struct GraspFunnel {
   /// they are in front of. max_standoff for an unknown shape or a grasp
   /// outside the object.
   double mouth(const FingerFit& f, double pad_reach) const;
+  /// m: the standoff while the object is still brought in (not yet at rest):
+  /// max_standoff, or farther where an object coming at the palm needs it:
+  /// the fingertips mouth_clearance plus the fit's lead in front of its near
+  /// face (max_standoff plus the lead for an unknown shape). The line-up's
+  /// own room in front of the object takes up the lead first: added on top
+  /// of it, the lead of every object still brought in held the fingers back
+  /// farther than its way needs (hand still to grasp +0.2 s on some takes).
+  double lineUp(const FingerFit& f, double pad_reach) const;
   /// Restarts the rate limit at `time` (s).
   void restart(double time) { last_time = time; }
   /// The slide for this cycle from the standoff tracked now (`standoff`, m)
   /// moving at `rate` (m/s), toward `goal` (m; funnelStandoff of the fit, or
-  /// max_standoff where the caller keeps the funnel closed).
-  Slide step(double standoff, double rate, double goal, double time);
+  /// max_standoff where the caller keeps the funnel closed). Backing out, up
+  /// to `extra_speed` (m/s) faster than `speed`: an object coming at the
+  /// palm is outrun (FingerFit::closing_speed).
+  Slide step(double standoff, double rate, double goal, double time, double extra_speed = 0.0);
 
  private:
-  Slide profile(double standoff, double rate, double goal, double time);
+  Slide profile(double standoff, double rate, double goal, double time, double extra_speed);
 };
 
 }  // namespace handover::fsm

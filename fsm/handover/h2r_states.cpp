@@ -21,13 +21,19 @@ void readFunnel(const YamlReader& def, double standoff, GraspFunnel& funnel) {
     def.child("standoff_acceleration").fail("a smooth slide is fed forward: needs standoff_feed_forward: true");
   funnel.margin = HandoverState::readRange(def, "funnel_margin", 0.0, 1.0);
   if (def.has("mouth_clearance")) funnel.mouth_clearance = HandoverState::readRange(def, "mouth_clearance", 0.0, standoff);
+  if (def.has("motion_horizon")) {
+    funnel.motion_horizon = HandoverState::readRange(def, "motion_horizon", 0.0, 1.0);
+    funnel.motion_significance = HandoverState::readRange(def, "motion_significance", 0.0, 10.0);
+  }
 }
 
 /// One step of `funnel`'s slide toward `goal` (m) from the standoff tracked now, sent to the
-/// tracking (with `shift`) when it moves or its rate changes. Returns the standoff (m).
+/// tracking (with `shift`) when it moves or its rate changes; backing out up to `extra_speed`
+/// (m/s) faster than its own. Returns the standoff (m).
 double slideToward(HandoverContext& ctx, ControllerHandle& ctrl, GraspFunnel& funnel, double goal,
-                   const Vector3& shift) {
-  const GraspFunnel::Slide slide = funnel.step(ctx.tracking_standoff, ctx.tracking_standoff_rate, goal, ctx.time);
+                   const Vector3& shift, double extra_speed = 0.0) {
+  const GraspFunnel::Slide slide =
+      funnel.step(ctx.tracking_standoff, ctx.tracking_standoff_rate, goal, ctx.time, extra_speed);
   if (slide.standoff != ctx.tracking_standoff || slide.rate != ctx.tracking_standoff_rate)
     setStandoff(ctx, ctrl, false, slide.standoff, shift, slide.rate, slide.acceleration);
   return slide.standoff;
@@ -36,10 +42,15 @@ double slideToward(HandoverContext& ctx, ControllerHandle& ctrl, GraspFunnel& fu
 /// N: what pushes the gripper back against its approach axis (the TCP's z).
 double pushBack(const HandoverInput& in) { return -in.tool_contact.head<3>().dot(in.tcp_pose.linear().col(2)); }
 
-/// How the object sits between the open fingers for `grasp` (world).
-FingerFit fitFor(const HandoverContext& ctx, const Isometry& object, const Isometry& grasp) {
-  return fingerFit(ctx.in.tcp_pose, object, grasp, ctx.object.shape, ctx.params->gripper_open_width,
-                   ctx.params->finger_half_span);
+/// How the object sits between the open fingers for `grasp` (world), and where its motion takes
+/// it within `funnel`'s motion horizon (budgetMotion; an object not seen now: as last seen).
+FingerFit fitFor(const HandoverContext& ctx, const Isometry& object, const Isometry& grasp, const GraspFunnel& funnel) {
+  FingerFit f = fingerFit(ctx.in.tcp_pose, object, grasp, ctx.object.shape, ctx.params->gripper_open_width,
+                          ctx.params->finger_half_span);
+  if (fresh(ctx.in.object, ctx.params->max_data_age))
+    budgetMotion(f, grasp, ctx.in.object.velocity.head<3>(), ctx.in.tcp_velocity.head<3>(), ctx.in.object.speed_std,
+                 funnel.motion_horizon, funnel.motion_significance);
+  return f;
 }
 }  // namespace
 
@@ -187,16 +198,16 @@ void Approach::slideIn(HandoverContext& ctx, bool arrived) {
   // moves would strike it; at the mouth, a lying tube brought in at 1.3 m/s struck the gripper:
   // g533_00010); arrived: from the mouth (the fingertips just in front of it) in as it fits
   const Isometry grasp = trackedGraspFrame(ctx);
-  FingerFit f = fitFor(ctx, ctx.in.observed_pose, grasp);
+  FingerFit f = fitFor(ctx, ctx.in.observed_pose, grasp, funnel_);
   const double mouth = funnel_.mouth(f, ctx.params->finger_pad_reach);
-  double goal = funnel_.max_standoff;
+  double goal = funnel_.lineUp(f, ctx.params->finger_pad_reach);
   if (arrived) {
     // Grasp's fit, and on the approach line across the closing axis too: the slide goes
     // along the line, not diagonally past the hand that holds the object
     f.fit -= std::abs((grasp.translation() - ctx.in.tcp_pose.translation()).dot(grasp.linear().col(0)));
     goal = funnelStandoff(f, mouth, funnel_.margin);
   }
-  const double standoff = slideToward(ctx, ctrl(), funnel_, goal, ctx.tracking_shift);
+  const double standoff = slideToward(ctx, ctrl(), funnel_, goal, ctx.tracking_shift, f.closing_speed);
   // in the funnel the gripper and the hand share the object, as in Grasp: the rules that keep
   // the fingers off the object and apart from the hand would stop the slide short of it
   ctrl().relaxHandClearance(standoff < mouth - 1e-6);
@@ -325,7 +336,7 @@ Isometry Grasp::correctedObject(const HandoverContext& ctx) const {
 FingerFit Grasp::fitNow(const HandoverContext& ctx) const {
   const Isometry object = correctedObject(ctx);
   const Isometry grasp = correctedGraspFrame(ctx);
-  FingerFit f = fitFor(ctx, object, grasp);
+  FingerFit f = fitFor(ctx, object, grasp, funnel_);
   f.hold_depth = hold_depth_.get(ctx.object.shape, object.inverse() * grasp, ctx.params->grip_friction);
   return f;
 }
@@ -416,7 +427,7 @@ bool Grasp::onRun(HandoverContext& ctx) {
     if (touch_force_ > 0.0 && feelTouch(ctx, f)) f = fitNow(ctx);  // the corrected grasp's fit
     // the funnel's standoff, reached at standoff_speed (the fit is as noisy as the object's pose)
     slideToward(ctx, ctrl(), funnel_, funnelStandoff(f, funnel_.mouth(f, ctx.params->finger_pad_reach), funnel_.margin),
-                touch_shift_);
+                touch_shift_, f.closing_speed);
     // closes only on an object between the fingers (the funnel's last part), and between
     // the pads along the approach axis when they meet it (a thin object fits across long before)
     const Isometry grasp = correctedGraspFrame(ctx);

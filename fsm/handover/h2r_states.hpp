@@ -82,8 +82,11 @@ class WaitForPerson : public HandoverState {
 /// distance along the approach axis) with, for a take's funnel,
 /// standoff_speed (m/s), standoff_feed_forward (bool, default false: the
 /// slide's rate fed forward to the tracking, GraspFunnel) with
-/// standoff_acceleration (m/s^2, optional: a smooth slide) and
-/// funnel_margin (share of the clearance, 0..1);
+/// standoff_acceleration (m/s^2, optional: a smooth slide),
+/// funnel_margin (share of the clearance, 0..1) and motion_horizon (s,
+/// optional, default 0: off) with motion_significance (standard deviations):
+/// the object's motion within the horizon costs the fit and, toward the
+/// palm, adds a lead to the standoff (budgetMotion);
 /// a give's lift (m, optional, default 0: none) with lift_speed (m/s): the
 /// presentation is approached from above the receiver's hand;
 /// a take's yield_force (N, optional, default 0: off): the empty gripper
@@ -153,7 +156,8 @@ class Approach : public HandoverState {
 /// standoff_feed_forward (bool, default false: the slide fed forward, and
 /// ended at the grasp also once closing) with standoff_acceleration (m/s^2,
 /// optional: a smooth slide that goes on from the approach's) and
-/// funnel_margin (share of the clearance, 0..1); touch_force (N, optional,
+/// funnel_margin (share of the clearance, 0..1), motion_horizon and
+/// motion_significance (as Approach's); touch_force (N, optional,
 /// default 0: no correction) with touch_time (s) and max_touches; jam_force
 /// (N, optional, default 0: off) with jam_time (s): the open gripper pushed
 /// back that hard for that long is jammed against the object (it struck the

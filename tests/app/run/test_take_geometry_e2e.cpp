@@ -27,7 +27,13 @@
 //   fingers closed 3 cm short of its axis on a 5.0 cm chord of its 6.6 cm,
 //   and it rolled out of the pinch while the person still held it. The width
 //   the fingers closed to now tells how far short they are; they open, go in
-//   by that much and close again (fsm/handover/h2r_states.hpp Grasp).
+//   by that much and close again (fsm/handover/h2r_states.hpp Grasp);
+// - an object that moves while the open fingers go around it: a ball brought
+//   on at 0.6 m/s into a gripper on its way to it (the palm struck at 1.4
+//   kN), a tube still brought in when the fingers would close on it (they
+//   closed, and it dragged the wrist past its speed limit). The grasp funnel
+//   now budgets the object's motion over the time the arm meets it late
+//   (grasp_funnel.hpp budgetMotion).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -70,6 +76,17 @@ TEST(TakeGeometry, FingersThatPinchARoundSideShortOfItsAxisGraspAgainDeeper) {
   EXPECT_FALSE(r.object_dropped);
   EXPECT_EQ(testing::stateVisits(r, "/Grasp"), 1) << "the regrip is inside the one grasp";
   EXPECT_EQ(r.human_contacts, 0);
+}
+
+TEST(TakeGeometry, AnObjectThatMovesWhileTheOpenFingersGoAroundItIsNotStruck) {
+  for (const char* file : {"h2r_ball_brought_on_into_gripper.yaml", "h2r_tube_closed_on_while_moving.yaml"}) {
+    const testing::ScratchDir dir("moving_into_fingers");
+    const app::RunSummary r = testing::runRepoFile(dir, std::string("tests/app/run/data/") + file);
+    EXPECT_EQ(r.outcome, "success") << file << "\n" << app::formatSummary(r);
+    EXPECT_EQ(r.limit_violations.velocity, 0) << file;
+    EXPECT_EQ(r.limit_violations.position, 0) << file;
+    EXPECT_EQ(r.human_contacts, 0) << file;
+  }
 }
 
 }  // namespace

@@ -187,6 +187,115 @@ TEST(GraspFunnelSlide, WithoutAnAccelerationLimitMovesAtItsSpeed) {
 }
 
 
+// An object that moves is met `horizon` late: across the
+// fingers its way costs the fit, toward the palm it is the lead the standoff
+// keeps, and noise within the speed's significance counts as nothing.
+TEST(GraspFunnel, AnObjectThatMovesAcrossTheFingersLosesTheFitItCoversWithinTheHorizon) {
+  const Vector3 p(0.5, 0.0, 0.3);
+  const Isometry grasp = sideGrasp(p);  // closing along world y, approach along world x
+  FingerFit f = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
+  ASSERT_NEAR(f.fit, 0.01, 1e-12);
+  budgetMotion(f, grasp, Vector3(0.0, 0.3, 0.0), Vector3::Zero(), 0.0, 0.1, 2.0);
+  EXPECT_NEAR(f.fit, 0.01 - 0.03, 1e-12);  // 0.3 m/s x 0.1 s across: a finger would land on it
+  EXPECT_EQ(f.lead, 0.0);
+  EXPECT_EQ(f.closing_speed, 0.0);
+  EXPECT_NEAR(funnelStandoff(f, 0.08, 0.5), 0.08, 1e-12);  // held back at the mouth
+  // where it will be, not how fast: 5 mm toward +y and moving back toward the middle, it fits better
+  const Isometry off = sideGrasp(p - Vector3(0.0, 0.005, 0.0));  // the TCP 5 mm toward -y
+  FingerFit back = fingerFit(off, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
+  ASSERT_NEAR(back.fit, 0.005, 1e-12);
+  budgetMotion(back, grasp, Vector3(0.0, -0.05, 0.0), Vector3::Zero(), 0.0, 0.1, 2.0);
+  EXPECT_NEAR(back.fit, 0.01, 1e-12);
+  EXPECT_NEAR(back.mid_plane, 0.0, 1e-12);
+  // the TCP's own motion does not enter: it is where it is, the object is known late
+  FingerFit same = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
+  budgetMotion(same, grasp, Vector3(0.0, 0.3, 0.0), Vector3(0.0, 0.3, 0.0), 0.0, 0.1, 2.0);
+  EXPECT_NEAR(same.fit, 0.01 - 0.03, 1e-12);
+  // the same speed along the fingers' width (world z) does not cost the fit
+  FingerFit g = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
+  budgetMotion(g, grasp, Vector3(0.0, 0.0, 0.3), Vector3::Zero(), 0.0, 0.1, 2.0);
+  EXPECT_NEAR(g.fit, 0.01, 1e-12);
+}
+
+TEST(GraspFunnel, AnObjectComingAtThePalmIsKeptInFrontByItsWayWithinTheHorizon) {
+  const Vector3 p(0.5, 0.0, 0.3);
+  const Isometry grasp = sideGrasp(p);
+  FingerFit f = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
+  // toward the palm is against the approach axis (world -x here) at 0.6 m/s
+  budgetMotion(f, grasp, Vector3(-0.6, 0.0, 0.0), Vector3::Zero(), 0.0, 0.1, 2.0);
+  EXPECT_NEAR(f.closing_speed, 0.6, 1e-12);
+  EXPECT_NEAR(f.lead, 0.06, 1e-12);
+  EXPECT_NEAR(f.fit, 0.01, 1e-12);                         // along the axis: the fit stays
+  EXPECT_NEAR(funnelStandoff(f, 0.08, 0.5), 0.06, 1e-12);  // fits, yet not slid onto it
+  // leaving (away from the palm): nothing to keep
+  FingerFit g = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
+  budgetMotion(g, grasp, Vector3(0.6, 0.0, 0.0), Vector3::Zero(), 0.0, 0.1, 2.0);
+  EXPECT_EQ(g.lead, 0.0);
+  EXPECT_EQ(g.closing_speed, 0.0);
+}
+
+TEST(GraspFunnel, TheArmsOwnWayInCountsOnlyWhileTheObjectComesAtThePalm) {
+  const Vector3 p(0.5, 0.0, 0.3);
+  const Isometry grasp = sideGrasp(p);  // approach along world x
+  // the TCP sliding in at 0.25 m/s onto an object at rest: its set slide, no lead
+  FingerFit f = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
+  budgetMotion(f, grasp, Vector3::Zero(), Vector3(0.25, 0.0, 0.0), 0.0, 0.1, 2.0);
+  EXPECT_EQ(f.lead, 0.0);
+  EXPECT_EQ(f.closing_speed, 0.0);
+  // the object coming at 0.6 m/s while the arm is on its way in at 0.4: the gap closes at 1.0
+  FingerFit g = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
+  budgetMotion(g, grasp, Vector3(-0.6, 0.0, 0.0), Vector3(0.4, 0.0, 0.0), 0.0, 0.1, 2.0);
+  EXPECT_NEAR(g.closing_speed, 1.0, 1e-12);
+  EXPECT_NEAR(g.lead, 0.1, 1e-12);
+  // an arm that already backs away with it takes its way off; faster than the object, nothing is left
+  FingerFit h = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
+  budgetMotion(h, grasp, Vector3(-0.6, 0.0, 0.0), Vector3(-0.4, 0.0, 0.0), 0.0, 0.1, 2.0);
+  EXPECT_NEAR(h.closing_speed, 0.2, 1e-12);
+  FingerFit k = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
+  budgetMotion(k, grasp, Vector3(-0.4, 0.0, 0.0), Vector3(-0.5, 0.0, 0.0), 0.0, 0.1, 2.0);
+  EXPECT_EQ(k.closing_speed, 0.0);
+  EXPECT_EQ(k.lead, 0.0);
+}
+
+TEST(GraspFunnel, ASpeedWithinItsNoiseIsNoMotion) {
+  const Vector3 p(0.5, 0.0, 0.3);
+  const Isometry grasp = sideGrasp(p);
+  FingerFit f = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
+  // 0.15 m/s across and toward with a speed std of 0.1: within 2 sigma, nothing
+  budgetMotion(f, grasp, Vector3(-0.15, 0.15, 0.0), Vector3::Zero(), 0.1, 0.1, 2.0);
+  EXPECT_NEAR(f.fit, 0.01, 1e-12);
+  EXPECT_EQ(f.lead, 0.0);
+  // beyond it, only what is beyond counts: (0.3 - 0.2) x 0.1 s
+  budgetMotion(f, grasp, Vector3(-0.3, 0.3, 0.0), Vector3::Zero(), 0.1, 0.1, 2.0);
+  EXPECT_NEAR(f.fit, 0.01 - 0.01, 1e-12);
+  EXPECT_NEAR(f.lead, 0.01, 1e-12);
+  // no horizon, or an object of unknown shape: untouched
+  FingerFit g = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
+  budgetMotion(g, grasp, Vector3(-0.6, 0.6, 0.0), Vector3::Zero(), 0.0, 0.0, 2.0);
+  EXPECT_NEAR(g.fit, 0.01, 1e-12);
+  EXPECT_EQ(g.lead, 0.0);
+  FingerFit u = fingerFit(grasp, at(p), grasp, io::ObjectShape{}, kOpening, kSpan);
+  budgetMotion(u, grasp, Vector3(-0.6, 0.6, 0.0), Vector3::Zero(), 0.0, 0.1, 2.0);
+  EXPECT_GT(u.fit, 1.0);
+  EXPECT_EQ(u.lead, 0.0);
+}
+
+TEST(GraspFunnelSlide, BacksOutFasterByTheSpeedOfAnObjectComingAtThePalm) {
+  GraspFunnel f = slideFunnel(0.0);  // 0.4 m/s
+  const GraspFunnel::Slide out = f.step(0.02, 0.0, 0.08, 0.01, 0.6);
+  EXPECT_NEAR(out.standoff, 0.03, 1e-12);  // (0.4 + 0.6) m/s for 10 ms
+  // sliding in keeps its own speed whatever the object does
+  f.restart(0.0);
+  const GraspFunnel::Slide in = f.step(0.08, 0.0, 0.0, 0.01, 0.6);
+  EXPECT_NEAR(in.standoff, 0.076, 1e-12);
+  // and with an acceleration limit the cap is raised the same way
+  GraspFunnel smooth = slideFunnel(100.0);
+  GraspFunnel::Slide s{0.0, 0.0, 0.0};
+  for (int k = 1; k <= 300; ++k) s = smooth.step(s.standoff, s.rate, 0.5, k * 0.001, 0.6);
+  EXPECT_GT(s.rate, 0.4 + 0.5);
+  EXPECT_LE(s.rate, 1.0 + 1e-9);
+}
+
 // How much of the object lies behind the grasp point toward the gripper, from
 // the shape: the depth the pads can close on.
 TEST(GraspFunnel, TheObjectBehindTheGraspPointIsMeasuredAlongTheApproachAxis) {

@@ -119,6 +119,13 @@ TEST(HandoverConfig, TakeGainsAndTheGraspFunnel) {
   EXPECT_NE(msg.find("max_touches"), std::string::npos) << msg;
   msg = loadError(replaced(shipped(), "yield_after: 1.0", "yield_after: -1.0"));
   EXPECT_NE(msg.find("yield_after"), std::string::npos) << msg;
+  // the funnel's motion budget: a horizon past a second, a negative significance, one without the other
+  msg = loadError(replaced(shipped(), "motion_horizon: 0.1", "motion_horizon: 5.0"));
+  EXPECT_NE(msg.find("motion_horizon"), std::string::npos) << msg;
+  msg = loadError(replaced(shipped(), "motion_significance: 2.0", "motion_significance: -1.0"));
+  EXPECT_NE(msg.find("motion_significance"), std::string::npos) << msg;
+  msg = loadError(replaced(shipped(), "motion_significance: 2.0", "funnel_depth: 2.0"));
+  EXPECT_NE(msg.find("motion_significance"), std::string::npos) << msg;
 }
 
 TEST(HandoverConfig, MissingThresholdIsAnError) {
