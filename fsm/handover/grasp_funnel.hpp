@@ -44,9 +44,10 @@ struct FingerFit {
   /// meet the object for their squeeze to hold it (holdDepth, which fingerFit
   /// leaves to its caller: the scan is for once per grasp); 0: not asked.
   double hold_depth = 0.0;
-  /// m: how far the object comes toward the palm along the approach axis
-  /// within the motion horizon (budgetMotion; 0 for one at rest or leaving):
-  /// the standoff keeps it on top of the funnel's.
+  /// m: how far the gap to an object that comes toward the palm closes within
+  /// the motion horizon (budgetMotion; 0 for one at rest or leaving): the
+  /// standoff keeps it, on top of the funnel's (funnelStandoff) and in front
+  /// of the near face while the object is still brought in (GraspFunnel::lineUp).
   double lead = 0.0;
   /// m/s: how fast the gap to an object that comes toward the palm closes
   /// (0: at rest or leaving): the funnel backs out at least this much faster.
