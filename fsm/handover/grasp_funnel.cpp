@@ -136,15 +136,20 @@ double funnelStandoff(const FingerFit& f, double max_standoff, double margin) {
   return max_standoff * (1.0 - enclosed) + f.lead;
 }
 
+double GraspFunnel::clearOfFace(const FingerFit& f, double pad_reach) const {
+  if (mouth_clearance < 0.0 || !(f.near_face > 0.0) || f.near_face > 1e6) return -1.0;
+  return f.near_face + pad_reach + mouth_clearance;
+}
+
 double GraspFunnel::mouth(const FingerFit& f, double pad_reach) const {
-  if (mouth_clearance < 0.0 || !(f.near_face > 0.0) || f.near_face > 1e6) return max_standoff;
-  return std::min(max_standoff, f.near_face + pad_reach + mouth_clearance);
+  const double clear = clearOfFace(f, pad_reach);
+  return clear < 0.0 ? max_standoff : std::min(max_standoff, clear);
 }
 
 double GraspFunnel::lineUp(const FingerFit& f, double pad_reach) const {
   if (!(f.lead > 0.0)) return max_standoff;
-  if (mouth_clearance < 0.0 || !(f.near_face > 0.0) || f.near_face > 1e6) return max_standoff + f.lead;
-  return std::max(max_standoff, f.near_face + pad_reach + mouth_clearance + f.lead);
+  const double clear = clearOfFace(f, pad_reach);
+  return clear < 0.0 ? max_standoff + f.lead : std::max(max_standoff, clear + f.lead);
 }
 
 GraspFunnel::Slide GraspFunnel::step(double standoff, double rate, double goal, double time, double extra_speed) {

@@ -203,6 +203,10 @@ struct GraspFunnel {
 
  private:
   Slide profile(double standoff, double rate, double goal, double time, double extra_speed);
+  /// m: the standoff at which the fingertips wait mouth_clearance in front of
+  /// the object's near face; -1 for an unknown shape, a grasp outside the
+  /// object or no mouth_clearance (mouth and lineUp fall back on max_standoff).
+  double clearOfFace(const FingerFit& f, double pad_reach) const;
 };
 
 }  // namespace handover::fsm

@@ -187,6 +187,17 @@ TEST(GraspFunnelSlide, WithoutAnAccelerationLimitMovesAtItsSpeed) {
 }
 
 
+/// The fit of a 6 cm cylinder aligned at a side grasp at `p` (1 cm to spare each side), budgeted
+/// for its `velocity` and the TCP's over `horizon` (s) with 2-sigma noise of `speed_std`.
+FingerFit movingFit(const Vector3& velocity, const Vector3& tcp_velocity = Vector3::Zero(), double speed_std = 0.0,
+                    double horizon = 0.1) {
+  const Vector3 p(0.5, 0.0, 0.3);
+  const Isometry grasp = sideGrasp(p);  // closing along world y, approach along world x
+  FingerFit f = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
+  budgetMotion(f, grasp, velocity, tcp_velocity, speed_std, horizon, 2.0);
+  return f;
+}
+
 // An object that moves is met `horizon` late: across the
 // fingers its way costs the fit, toward the palm it is the lead the standoff
 // keeps, and noise within the speed's significance counts as nothing.
@@ -208,51 +219,39 @@ TEST(GraspFunnel, AnObjectThatMovesAcrossTheFingersLosesTheFitItCoversWithinTheH
   EXPECT_NEAR(back.fit, 0.01, 1e-12);
   EXPECT_NEAR(back.mid_plane, 0.0, 1e-12);
   // the TCP's own motion does not enter: it is where it is, the object is known late
-  FingerFit same = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
-  budgetMotion(same, grasp, Vector3(0.0, 0.3, 0.0), Vector3(0.0, 0.3, 0.0), 0.0, 0.1, 2.0);
+  FingerFit same = movingFit(Vector3(0.0, 0.3, 0.0), Vector3(0.0, 0.3, 0.0));
   EXPECT_NEAR(same.fit, 0.01 - 0.03, 1e-12);
   // the same speed along the fingers' width (world z) does not cost the fit
-  FingerFit g = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
-  budgetMotion(g, grasp, Vector3(0.0, 0.0, 0.3), Vector3::Zero(), 0.0, 0.1, 2.0);
+  FingerFit g = movingFit(Vector3(0.0, 0.0, 0.3));
   EXPECT_NEAR(g.fit, 0.01, 1e-12);
 }
 
 TEST(GraspFunnel, AnObjectComingAtThePalmIsKeptInFrontByItsWayWithinTheHorizon) {
-  const Vector3 p(0.5, 0.0, 0.3);
-  const Isometry grasp = sideGrasp(p);
-  FingerFit f = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
   // toward the palm is against the approach axis (world -x here) at 0.6 m/s
-  budgetMotion(f, grasp, Vector3(-0.6, 0.0, 0.0), Vector3::Zero(), 0.0, 0.1, 2.0);
+  FingerFit f = movingFit(Vector3(-0.6, 0.0, 0.0));
   EXPECT_NEAR(f.closing_speed, 0.6, 1e-12);
   EXPECT_NEAR(f.lead, 0.06, 1e-12);
   EXPECT_NEAR(f.fit, 0.01, 1e-12);                         // along the axis: the fit stays
   EXPECT_NEAR(funnelStandoff(f, 0.08, 0.5), 0.06, 1e-12);  // fits, yet not slid onto it
   // leaving (away from the palm): nothing to keep
-  FingerFit g = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
-  budgetMotion(g, grasp, Vector3(0.6, 0.0, 0.0), Vector3::Zero(), 0.0, 0.1, 2.0);
+  FingerFit g = movingFit(Vector3(0.6, 0.0, 0.0));
   EXPECT_EQ(g.lead, 0.0);
   EXPECT_EQ(g.closing_speed, 0.0);
 }
 
 TEST(GraspFunnel, TheArmsOwnWayInCountsOnlyWhileTheObjectComesAtThePalm) {
-  const Vector3 p(0.5, 0.0, 0.3);
-  const Isometry grasp = sideGrasp(p);  // approach along world x
   // the TCP sliding in at 0.25 m/s onto an object at rest: its set slide, no lead
-  FingerFit f = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
-  budgetMotion(f, grasp, Vector3::Zero(), Vector3(0.25, 0.0, 0.0), 0.0, 0.1, 2.0);
+  FingerFit f = movingFit(Vector3::Zero(), Vector3(0.25, 0.0, 0.0));
   EXPECT_EQ(f.lead, 0.0);
   EXPECT_EQ(f.closing_speed, 0.0);
   // the object coming at 0.6 m/s while the arm is on its way in at 0.4: the gap closes at 1.0
-  FingerFit g = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
-  budgetMotion(g, grasp, Vector3(-0.6, 0.0, 0.0), Vector3(0.4, 0.0, 0.0), 0.0, 0.1, 2.0);
+  FingerFit g = movingFit(Vector3(-0.6, 0.0, 0.0), Vector3(0.4, 0.0, 0.0));
   EXPECT_NEAR(g.closing_speed, 1.0, 1e-12);
   EXPECT_NEAR(g.lead, 0.1, 1e-12);
   // an arm that already backs away with it takes its way off; faster than the object, nothing is left
-  FingerFit h = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
-  budgetMotion(h, grasp, Vector3(-0.6, 0.0, 0.0), Vector3(-0.4, 0.0, 0.0), 0.0, 0.1, 2.0);
+  FingerFit h = movingFit(Vector3(-0.6, 0.0, 0.0), Vector3(-0.4, 0.0, 0.0));
   EXPECT_NEAR(h.closing_speed, 0.2, 1e-12);
-  FingerFit k = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
-  budgetMotion(k, grasp, Vector3(-0.4, 0.0, 0.0), Vector3(-0.5, 0.0, 0.0), 0.0, 0.1, 2.0);
+  FingerFit k = movingFit(Vector3(-0.4, 0.0, 0.0), Vector3(-0.5, 0.0, 0.0));
   EXPECT_EQ(k.closing_speed, 0.0);
   EXPECT_EQ(k.lead, 0.0);
 }
@@ -260,9 +259,8 @@ TEST(GraspFunnel, TheArmsOwnWayInCountsOnlyWhileTheObjectComesAtThePalm) {
 TEST(GraspFunnel, ASpeedWithinItsNoiseIsNoMotion) {
   const Vector3 p(0.5, 0.0, 0.3);
   const Isometry grasp = sideGrasp(p);
-  FingerFit f = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
   // 0.15 m/s across and toward with a speed std of 0.1: within 2 sigma, nothing
-  budgetMotion(f, grasp, Vector3(-0.15, 0.15, 0.0), Vector3::Zero(), 0.1, 0.1, 2.0);
+  FingerFit f = movingFit(Vector3(-0.15, 0.15, 0.0), Vector3::Zero(), 0.1);
   EXPECT_NEAR(f.fit, 0.01, 1e-12);
   EXPECT_EQ(f.lead, 0.0);
   // beyond it, only what is beyond counts: (0.3 - 0.2) x 0.1 s
@@ -270,14 +268,35 @@ TEST(GraspFunnel, ASpeedWithinItsNoiseIsNoMotion) {
   EXPECT_NEAR(f.fit, 0.01 - 0.01, 1e-12);
   EXPECT_NEAR(f.lead, 0.01, 1e-12);
   // no horizon, or an object of unknown shape: untouched
-  FingerFit g = fingerFit(grasp, at(p), grasp, cylinder(0.03, 0.2), kOpening, kSpan);
-  budgetMotion(g, grasp, Vector3(-0.6, 0.6, 0.0), Vector3::Zero(), 0.0, 0.0, 2.0);
+  FingerFit g = movingFit(Vector3(-0.6, 0.6, 0.0), Vector3::Zero(), 0.0, 0.0);
   EXPECT_NEAR(g.fit, 0.01, 1e-12);
   EXPECT_EQ(g.lead, 0.0);
   FingerFit u = fingerFit(grasp, at(p), grasp, io::ObjectShape{}, kOpening, kSpan);
   budgetMotion(u, grasp, Vector3(-0.6, 0.6, 0.0), Vector3::Zero(), 0.0, 0.1, 2.0);
   EXPECT_GT(u.fit, 1.0);
   EXPECT_EQ(u.lead, 0.0);
+}
+
+// While the object is still brought in the funnel waits at its line-up: the
+// whole standoff, farther only where an object coming at the palm needs the
+// fingertips mouth_clearance plus its lead in front of the near face.
+TEST(GraspFunnel, TheLineUpKeepsAnObjectComingAtThePalmItsLeadInFrontOfItsFace) {
+  GraspFunnel g;
+  g.max_standoff = 0.08;
+  g.mouth_clearance = 0.02;
+  FingerFit f;
+  f.clearance = 0.01;
+  f.near_face = 0.03;  // the fingertips (pad_reach 0.01) clear of the face from 0.03 + 0.01 + 0.02 = 0.06
+  EXPECT_EQ(g.lineUp(f, 0.01), 0.08);  // at rest: the whole standoff
+  f.lead = 0.01;
+  EXPECT_EQ(g.lineUp(f, 0.01), 0.08);  // 0.07 needed: within the line-up's own room
+  f.lead = 0.05;
+  EXPECT_NEAR(g.lineUp(f, 0.01), 0.11, 1e-12);  // 0.06 + 0.05 farther than the line-up
+  EXPECT_NEAR(g.mouth(f, 0.01), 0.06, 1e-12);  // the mouth is the object's, whatever the lead
+  // an unknown shape: the whole standoff and the lead on top
+  FingerFit unknown;
+  unknown.lead = 0.05;
+  EXPECT_NEAR(g.lineUp(unknown, 0.01), 0.13, 1e-12);
 }
 
 TEST(GraspFunnelSlide, BacksOutFasterByTheSpeedOfAnObjectComingAtThePalm) {

@@ -39,6 +39,12 @@ std::string loadError(const std::string& text) {
   return "";
 }
 
+/// The shipped file with `from` replaced by `to` is refused with a message naming `what`.
+void expectRefused(const std::string& from, const std::string& to, const std::string& what) {
+  const std::string msg = loadError(replaced(shipped(), from, to));
+  EXPECT_NE(msg.find(what), std::string::npos) << from << " -> " << to << ": " << msg;
+}
+
 TEST(HandoverConfig, ShippedConfigLoads) {
   EXPECT_EQ(loadError(shipped()), "");
   RecordingController ctl;
@@ -82,17 +88,13 @@ TEST(HandoverConfig, UnknownOutput) {
 }
 
 TEST(HandoverConfig, BadParameterValues) {
-  std::string msg = loadError(replaced(shipped(), "gravity_sign: -1", "gravity_sign: 2"));
-  EXPECT_NE(msg.find("params.ft.gravity_sign"), std::string::npos) << msg;
-  msg = loadError(replaced(shipped(), "pull_threshold: 3.0", "pull_threshold: -3.0"));
+  expectRefused("gravity_sign: -1", "gravity_sign: 2", "params.ft.gravity_sign");
+  const std::string msg = loadError(replaced(shipped(), "pull_threshold: 3.0", "pull_threshold: -3.0"));
   EXPECT_NE(msg.find("pull_threshold"), std::string::npos) << msg;
   EXPECT_NE(msg.find("must be > 0"), std::string::npos) << msg;
-  msg = loadError(replaced(shipped(), "pose: stow", "pose: home"));
-  EXPECT_NE(msg.find("'home' is not one of: stow | safe | ready"), std::string::npos) << msg;
-  msg = loadError(replaced(shipped(), "close_width: 0.0", "close_width: 0.09"));
-  EXPECT_NE(msg.find("params.gripper.close_width"), std::string::npos) << msg;
-  msg = loadError(replaced(shipped(), "home_radius: 0.025", "home_radius: 0.9"));
-  EXPECT_NE(msg.find("params.withdraw.home_radius"), std::string::npos) << msg;
+  expectRefused("pose: stow", "pose: home", "'home' is not one of: stow | safe | ready");
+  expectRefused("close_width: 0.0", "close_width: 0.09", "params.gripper.close_width");
+  expectRefused("home_radius: 0.025", "home_radius: 0.9", "params.withdraw.home_radius");
 }
 
 TEST(HandoverConfig, TakeGainsAndTheGraspFunnel) {
@@ -101,31 +103,20 @@ TEST(HandoverConfig, TakeGainsAndTheGraspFunnel) {
   // the fingers line up stiffer than the arm follows (both read from the shipped file)
   EXPECT_GT(fsm.params().align_tracking_translation_stiffness, fsm.params().tracking_translation_stiffness);
   EXPECT_GT(fsm.params().finger_half_span, 0.0);
-  std::string msg = loadError(replaced(shipped(), "align:", "aling:"));
-  EXPECT_NE(msg.find("unknown key 'aling'"), std::string::npos) << msg;
-  msg = loadError(replaced(shipped(), "funnel_margin: 0.25", "funnel_margin: 1.5"));
-  EXPECT_NE(msg.find("funnel_margin"), std::string::npos) << msg;
-  msg = loadError(replaced(shipped(), "finger_half_span: 0.012", "finger_half_span: -0.01"));
-  EXPECT_NE(msg.find("params.gripper.finger_half_span"), std::string::npos) << msg;
+  expectRefused("align:", "aling:", "unknown key 'aling'");
+  expectRefused("funnel_margin: 0.25", "funnel_margin: 1.5", "funnel_margin");
+  expectRefused("finger_half_span: 0.012", "finger_half_span: -0.01", "params.gripper.finger_half_span");
   EXPECT_GT(fsm.params().finger_pad_reach, 0.0);
   EXPECT_GT(fsm.params().grip_depth, 0.0);
-  msg = loadError(replaced(shipped(), "pad_reach: 0.0095", "pad_reach: 0.2"));
-  EXPECT_NE(msg.find("params.gripper.pad_reach"), std::string::npos) << msg;
-  msg = loadError(replaced(shipped(), "grip_depth: 0.006", "grip_depth: -0.006"));
-  EXPECT_NE(msg.find("params.gripper.grip_depth"), std::string::npos) << msg;
-  msg = loadError(replaced(shipped(), "touch_force: 5.0", "touch_force: -5.0"));
-  EXPECT_NE(msg.find("touch_force"), std::string::npos) << msg;
-  msg = loadError(replaced(shipped(), "max_touches: 2", "max_touches: 20"));
-  EXPECT_NE(msg.find("max_touches"), std::string::npos) << msg;
-  msg = loadError(replaced(shipped(), "yield_after: 1.0", "yield_after: -1.0"));
-  EXPECT_NE(msg.find("yield_after"), std::string::npos) << msg;
+  expectRefused("pad_reach: 0.0095", "pad_reach: 0.2", "params.gripper.pad_reach");
+  expectRefused("grip_depth: 0.006", "grip_depth: -0.006", "params.gripper.grip_depth");
+  expectRefused("touch_force: 5.0", "touch_force: -5.0", "touch_force");
+  expectRefused("max_touches: 2", "max_touches: 20", "max_touches");
+  expectRefused("yield_after: 1.0", "yield_after: -1.0", "yield_after");
   // the funnel's motion budget: a horizon past a second, a negative significance, one without the other
-  msg = loadError(replaced(shipped(), "motion_horizon: 0.1", "motion_horizon: 5.0"));
-  EXPECT_NE(msg.find("motion_horizon"), std::string::npos) << msg;
-  msg = loadError(replaced(shipped(), "motion_significance: 2.0", "motion_significance: -1.0"));
-  EXPECT_NE(msg.find("motion_significance"), std::string::npos) << msg;
-  msg = loadError(replaced(shipped(), "motion_significance: 2.0", "funnel_depth: 2.0"));
-  EXPECT_NE(msg.find("motion_significance"), std::string::npos) << msg;
+  expectRefused("motion_horizon: 0.1", "motion_horizon: 5.0", "motion_horizon");
+  expectRefused("motion_significance: 2.0", "motion_significance: -1.0", "motion_significance");
+  expectRefused("motion_significance: 2.0", "funnel_depth: 2.0", "motion_significance");
 }
 
 TEST(HandoverConfig, MissingThresholdIsAnError) {
