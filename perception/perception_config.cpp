@@ -9,16 +9,13 @@ EstimatorSettings PerceptionConfig::defaults() {
   EstimatorSettings e;  // the Kalman filter, its prediction and the gates as shipped
   e.smoothing_time = 0.03;
   e.rotation_smoothing_time = 0.1;
-  e.motion_acceleration_noise = 1.0;
   return e;
 }
 
 namespace {
 
-void parseKalman(const YamlReader& k, PoseFilterSettings& f, double& motion_acceleration_noise) {
+void parseKalman(const YamlReader& k, PoseFilterSettings& f) {
   if (!k.isMap()) k.fail("expected a map of Kalman filter settings");
-  if (auto v = k.optionalChild("motion_acceleration_noise"))
-    motion_acceleration_noise = v->asDouble() == 0.0 ? 0.0 : v->checkRange(v->asDouble(), 1e-3, 1e4);
   if (auto v = k.optionalChild("position_noise")) f.position_noise = v->checkRange(v->asDouble(), 1e-5, 1.0);
   if (auto v = k.optionalChild("rotation_noise_deg"))
     f.rotation_noise = v->checkRange(v->asDouble(), 1e-3, 45.0) * M_PI / 180.0;
@@ -84,7 +81,7 @@ PerceptionConfig parsePerceptionConfig(const YamlReader& root) {
     e.prediction_significance = v->checkRange(v->asDouble(), 0.0, 10.0);
   if (auto v = root.optionalChild("rotation_prediction_horizon"))
     e.rotation_prediction_horizon = v->checkRange(v->asDouble(), 0.0, 1.0);
-  if (auto v = root.optionalChild("kalman")) parseKalman(*v, e.filter, e.motion_acceleration_noise);
+  if (auto v = root.optionalChild("kalman")) parseKalman(*v, e.filter);
   if (auto v = root.optionalChild("smoothing_time")) e.smoothing_time = v->checkRange(v->asDouble(), 0.0, 1.0);
   if (auto v = root.optionalChild("rotation_smoothing_time"))
     e.rotation_smoothing_time = v->checkRange(v->asDouble(), 0.0, 1.0);

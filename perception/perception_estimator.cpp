@@ -7,11 +7,6 @@ namespace handover::perception {
 
 namespace {
 bool unitQuaternion(const Pose& p) { return std::abs(p.orientation.norm() - 1.0) <= 1e-3; }
-PoseFilterSettings fastFilter(const EstimatorSettings& s) {
-  PoseFilterSettings f = s.filter;
-  if (s.motion_acceleration_noise > 0.0) f.acceleration_noise = s.motion_acceleration_noise;
-  return f;
-}
 bool validSample(const PoseSample& s) {
   return s.allFinite() && unitQuaternion(s.hand) && unitQuaternion(s.forearm) && unitQuaternion(s.upper_arm) &&
          (!s.has_object || unitQuaternion(s.object));
@@ -24,9 +19,7 @@ PerceptionEstimator::PerceptionEstimator(const EstimatorSettings& settings)
       hand_f_(settings.filter),
       forearm_f_(settings.filter),
       upper_arm_f_(settings.filter),
-      object_f_(settings.filter),
-      hand_motion_f_(fastFilter(settings)),
-      object_motion_f_(fastFilter(settings)) {}
+      object_f_(settings.filter) {}
 
 void PerceptionEstimator::reset() {
   have_ = false;
@@ -38,8 +31,6 @@ void PerceptionEstimator::reset() {
   forearm_f_.clear();
   upper_arm_f_.clear();
   object_f_.clear();
-  hand_motion_f_.clear();
-  object_motion_f_.clear();
 }
 
 bool PerceptionEstimator::addSample(const PoseSample& s, double arrival) {
@@ -82,19 +73,13 @@ void PerceptionEstimator::filter(const PoseSample& s, bool reseed) {
     if (reseed || !f.seeded()) f.reset(z, s.stamp);
     else f.update(z, s.stamp);
   };
-  const bool fast = settings_.motion_acceleration_noise > 0.0;
   feed(hand_f_, s.hand);
-  if (fast) feed(hand_motion_f_, s.hand);
   feed(forearm_f_, s.forearm);
   feed(upper_arm_f_, s.upper_arm);
   if (settings_.smooth_rotations) smoothInto(smoothed_, s, have_ && !reseed);
   if (s.has_object) {
-    if (!latest_.has_object || !have_) {  // the object (re)appears in the stream
-      object_f_.clear();
-      object_motion_f_.clear();
-    }
+    if (!latest_.has_object || !have_) object_f_.clear();  // the object (re)appears in the stream
     feed(object_f_, s.object);
-    if (fast) feed(object_motion_f_, s.object);
   }
   latest_ = s;
 }
@@ -160,14 +145,9 @@ const PerceptionEstimate& PerceptionEstimator::estimate(double now, ObjectHolder
       h.has_velocity = true;
       h.hand_velocity << hand_f_.velocity(), hand_f_.angularVelocity();
       h.hand_speed_std = std::sqrt(std::max(0.0, hand_f_.positionCovariance().vv));
-      const PoseFilter& hm = settings_.motion_acceleration_noise > 0.0 ? hand_motion_f_ : hand_f_;
-      h.hand_motion = hm.velocity();
-      h.hand_motion_std = std::sqrt(std::max(0.0, hm.positionCovariance().vv));
     } else {
       h.has_velocity = false;
       h.hand_speed_std = 0.0;
-      h.hand_motion.setZero();
-      h.hand_motion_std = 0.0;
       h.predicted = 0.0;
       h.hand = latest_.hand.isometry();
       h.forearm = latest_.forearm.isometry();
@@ -178,8 +158,6 @@ const PerceptionEstimate& PerceptionEstimator::estimate(double now, ObjectHolder
     h.stale = true;
     h.has_velocity = false;
     h.hand_speed_std = 0.0;
-    h.hand_motion.setZero();
-    h.hand_motion_std = 0.0;
     h.age = h.silence = h.latency = h.predicted = 0.0;
   }
 
@@ -193,20 +171,13 @@ const PerceptionEstimate& PerceptionEstimator::estimate(double now, ObjectHolder
       if (h.valid) o.pose = latest_.has_object ? tracked_object : h.hand * settings_.hand_T_object;
       o.has_velocity = h.valid && h.has_velocity;
       o.speed_std = o.has_velocity ? h.hand_speed_std : 0.0;
-      o.motion.setZero();
-      o.motion_std = o.has_velocity ? h.hand_motion_std : 0.0;
       if (o.has_velocity && latest_.has_object) {
         o.velocity << object_f_.velocity(), object_f_.angularVelocity();
         o.speed_std = std::sqrt(std::max(0.0, object_f_.positionCovariance().vv));
-        const PoseFilter& om = settings_.motion_acceleration_noise > 0.0 ? object_motion_f_ : object_f_;
-        o.motion = om.velocity();
-        o.motion_std = std::sqrt(std::max(0.0, om.positionCovariance().vv));
       } else if (o.has_velocity) {  // carried rigidly by the hand
         const Eigen::Vector3d w = h.hand_velocity.tail<3>();
-        const Eigen::Vector3d lever = w.cross(o.pose.translation() - h.hand.translation());
-        o.velocity.head<3>() = h.hand_velocity.head<3>() + lever;
+        o.velocity.head<3>() = h.hand_velocity.head<3>() + w.cross(o.pose.translation() - h.hand.translation());
         o.velocity.tail<3>() = w;
-        o.motion = h.hand_motion + lever;
       }
       break;
     case ObjectHolder::Robot:
@@ -214,8 +185,6 @@ const PerceptionEstimate& PerceptionEstimator::estimate(double now, ObjectHolder
       o.stale = false;
       o.has_velocity = false;
       o.speed_std = 0.0;
-      o.motion.setZero();
-      o.motion_std = 0.0;
       o.pose = tcp_pose * tcp_T_object;
       break;
     case ObjectHolder::Nobody:
@@ -223,8 +192,6 @@ const PerceptionEstimate& PerceptionEstimator::estimate(double now, ObjectHolder
       o.stale = true;
       o.has_velocity = false;
       o.speed_std = 0.0;
-      o.motion.setZero();
-      o.motion_std = 0.0;
       break;
   }
   return est_;

@@ -59,14 +59,6 @@ struct EstimatorSettings {
   /// and predicted).
   bool smooth_rotations = true;
   PoseFilterSettings filter;  ///< kalman: noise and motion model
-  /// kalman: m/s^1.5; > 0: a second filter per hand and tracked object with
-  /// this acceleration noise (the rest as `filter`) estimates the linear
-  /// velocity that geometry must not lag (HumanEstimate::hand_motion,
-  /// ObjectEstimate::motion): a fast filter's velocity follows the onset of a
-  /// motion 2-3 times sooner but is noisier, so the decisions that read a
-  /// speed (arrived, withdrawn) keep the steady one. 0: the motion is the
-  /// velocity.
-  double motion_acceleration_noise = 0.0;
   /// smoothing: s, time constant of the first-order smoothing applied to
   /// each new sample (positions exponentially, rotations by slerp), 0 =
   /// none. The weight of a sample is 1 - exp(-dt / smoothing_time), so after
@@ -104,11 +96,6 @@ struct HumanEstimate {
   /// hand's linear velocity (its covariance; large while a track is young:
   /// two samples of a hand at rest differ by the sensor's noise); 0 without one.
   double hand_speed_std = 0.0;
-  /// kalman: the hand's linear velocity from the fast filter
-  /// (EstimatorSettings::motion_acceleration_noise; else hand_velocity's), m/s,
-  /// world, and the standard deviation of each component, m/s.
-  Eigen::Vector3d hand_motion = Eigen::Vector3d::Zero();
-  double hand_motion_std = 0.0;
 };
 
 struct ObjectEstimate {
@@ -122,11 +109,6 @@ struct ObjectEstimate {
   bool has_velocity = false;
   Eigen::Matrix<double, 6, 1> velocity = Eigen::Matrix<double, 6, 1>::Zero();
   double speed_std = 0.0;  ///< m/s, as HumanEstimate::hand_speed_std, for `velocity`
-  /// m/s, world: the linear velocity from the fast filter, as
-  /// HumanEstimate::hand_motion (the hand's carried to the object's origin
-  /// when the object is not tracked itself), and its standard deviation.
-  Eigen::Vector3d motion = Eigen::Vector3d::Zero();
-  double motion_std = 0.0;
 };
 
 struct PerceptionEstimate {
@@ -174,7 +156,6 @@ class PerceptionEstimator {
   PoseSample latest_;  ///< smoothing: the smoothed sample; kalman: the latest accepted (raw)
   PoseSample smoothed_;  ///< kalman with rotation_smoothing: the first-order smoothed sample (its rotations)
   PoseFilter hand_f_, forearm_f_, upper_arm_f_, object_f_;
-  PoseFilter hand_motion_f_, object_motion_f_;  ///< the fast filters (motion_acceleration_noise > 0)
   double arrival_ = 0.0;  ///< s, when latest_ arrived
   PerceptionEstimate est_;
   RejectCounts rejects_;

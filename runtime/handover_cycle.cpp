@@ -290,17 +290,12 @@ void HandoverCycle::assembleInput(double t, const io::ArmState& arm, const perce
   in.hand.pose = est.human.hand;
   in.hand.velocity = hand_vel_.velocity();
   in.hand.speed_std = est.human.hand_speed_std;  // 0 without a motion model
-  in.hand.motion = est.human.has_velocity ? est.human.hand_motion : in.hand.velocity.head<3>().eval();
-  in.hand.motion_std = est.human.has_velocity ? est.human.hand_motion_std : 0.0;
   in.hand.valid = est.human.valid && !est.human.stale;
   in.hand.age = est.human.valid ? est.human.silence : 1e9;  // a steady latency is not silence
   in.hand.stamp = est.human.valid ? est.human.stamp : -1.0;
   in.object.pose = est.object.pose;
   in.object.velocity = robot_holds ? controller_.tcpVelocity() : object_vel_.velocity();
   in.object.speed_std = robot_holds ? 0.0 : est.object.speed_std;
-  const bool object_motion = !robot_holds && est.object.has_velocity;
-  in.object.motion = object_motion ? est.object.motion : in.object.velocity.head<3>().eval();
-  in.object.motion_std = object_motion ? est.object.motion_std : 0.0;
   in.object.valid = est.object.valid && !est.object.stale;
   in.object.age = robot_holds ? 0.0 : in.hand.age;
   in.object.stamp = robot_holds ? t : in.hand.stamp;  // sensed with the hand, or the TCP's now

@@ -93,25 +93,19 @@ FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry&
   return f;
 }
 
-double MotionEstimates::significant(const Vector3& axis, double significance) const {
-  const auto beyondNoise = [significance](double v, double std_dev) {
-    return std::copysign(std::max(0.0, std::abs(v) - significance * std::max(0.0, std_dev)), v);
-  };
-  const double a = beyondNoise(steady.dot(axis), steady_std), b = beyondNoise(fast.dot(axis), fast_std);
-  return std::abs(b) > std::abs(a) ? b : a;
-}
-
-void budgetMotion(FingerFit& f, const Isometry& grasp, const MotionEstimates& motion, const Vector3& tcp_velocity,
-                  double horizon, double significance) {
+void budgetMotion(FingerFit& f, const Isometry& grasp, const Vector3& velocity, const Vector3& tcp_velocity,
+                  double speed_std, double horizon, double significance) {
   if (!(horizon > 0.0) || f.clearance > 1e6) return;  // unknown shape: no fit to budget
+  const double noise = significance * std::max(0.0, speed_std);
+  const auto beyondNoise = [noise](double v) { return std::copysign(std::max(0.0, std::abs(v) - noise), v); };
   // across the fingers: where the object's mid-plane is by the time the arm knows it (the TCP is
   // where it is; the object has moved on by its own way)
-  const double drift = motion.significant(grasp.linear().col(1), significance) * horizon;
+  const double drift = beyondNoise(velocity.dot(grasp.linear().col(1))) * horizon;
   f.fit += std::abs(f.mid_plane) - std::abs(f.mid_plane + drift);
   f.mid_plane += drift;
   // toward the palm (against the approach axis, which points from the palm to the object)
   const Vector3 approach = grasp.linear().col(2);
-  const double coming = std::max(0.0, -motion.significant(approach, significance));
+  const double coming = std::max(0.0, -beyondNoise(velocity.dot(approach)));
   // coming: the gap closes at the speed between the two, the arm's own way in (which takes it as
   // long to undo) adding to the object's, its way back (following the object) taking from it
   f.closing_speed = coming > 0.0 ? std::max(0.0, coming + tcp_velocity.dot(approach)) : 0.0;

@@ -114,26 +114,9 @@ bool holdsWhenClosed(const FingerFit& f, double along, double pad_reach);
 FingerFit fingerFit(const Isometry& tcp, const Isometry& object, const Isometry& grasp, const io::ObjectShape& shape,
                     double opening, double finger_half_span);
 
-/// Perception's two estimates of a body's linear velocity (m/s, world), each
-/// component known to its standard deviation (m/s): the steady one
-/// (SensedBody::velocity, speed_std) and the fast one (SensedBody::motion,
-/// motion_std), which knows a motion's onset 2-3 times sooner but is noisier.
-struct MotionEstimates {
-  Vector3 steady = Vector3::Zero();
-  double steady_std = 0.0;
-  Vector3 fast = Vector3::Zero();
-  double fast_std = 0.0;
-  /// m/s: the component along `axis` (unit) known beyond `significance`
-  /// standard deviations, from whichever estimate knows more of it (the
-  /// fast one at an onset, the steady one for a slow steady motion its noise
-  /// hides in the fast one's); 0 when neither does.
-  double significant(const Vector3& axis, double significance) const;
-};
-
-/// The fit `f` (for `grasp`, world) of an object that moves as `motion`
-/// estimates (its components within `significance` standard deviations of 0
-/// count as 0: a hand at rest reads its noise as speed), the TCP moving at
-/// `tcp_velocity` (m/s, world). The arm meets the object's
+/// The fit `f` (for `grasp`, world) of an object that moves at `velocity`
+/// (m/s, world: its estimate), each component known to `speed_std` (m/s),
+/// the TCP moving at `tcp_velocity` (m/s, world). The arm meets the object's
 /// motion only `horizon` (s) after it began: the observed object lags the
 /// estimate by the observation's D / K, the estimate lags a sample, the
 /// tracking lags its target. So:
@@ -149,9 +132,11 @@ struct MotionEstimates {
 ///   ball brought on at 0.6 m/s into a gripper on its way to it struck the
 ///   palm at 1.4 kN: the mouth's 2 cm were gone in 20 ms). The TCP's own way
 ///   in counts only then: onto an object at rest it slides at its set speed.
+/// A component of the object's velocity within `significance` standard
+/// deviations of 0 counts as 0 (a hand at rest reads its noise as speed).
 /// RT safe.
-void budgetMotion(FingerFit& f, const Isometry& grasp, const MotionEstimates& motion, const Vector3& tcp_velocity,
-                  double horizon, double significance);
+void budgetMotion(FingerFit& f, const Isometry& grasp, const Vector3& velocity, const Vector3& tcp_velocity,
+                  double speed_std, double horizon, double significance);
 
 /// Standoff (m) along the approach axis for this fit: max_standoff while the
 /// object does not fit, 0 once the fit keeps `margin` (a fraction of the

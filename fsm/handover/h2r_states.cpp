@@ -48,9 +48,7 @@ FingerFit fitFor(const HandoverContext& ctx, const Isometry& object, const Isome
   FingerFit f = fingerFit(ctx.in.tcp_pose, object, grasp, ctx.object.shape, ctx.params->gripper_open_width,
                           ctx.params->finger_half_span);
   if (fresh(ctx.in.object, ctx.params->max_data_age))
-    budgetMotion(f, grasp,
-                 {ctx.in.object.velocity.head<3>(), ctx.in.object.speed_std, ctx.in.object.motion, ctx.in.object.motion_std},
-                 ctx.in.tcp_velocity.head<3>(),
+    budgetMotion(f, grasp, ctx.in.object.velocity.head<3>(), ctx.in.tcp_velocity.head<3>(), ctx.in.object.speed_std,
                  funnel.motion_horizon, funnel.motion_significance);
   return f;
 }

@@ -16,11 +16,6 @@ struct SensedBody {
   /// m/s, standard deviation of each component of the linear velocity estimate (0: taken as
   /// exact): a track a few samples old knows little of its speed
   double speed_std = 0.0;
-  /// m/s, world: the linear velocity from perception's fast estimate (noisier, 2-3 times
-  /// sooner at a motion's onset: for the budgets of geometry that must not lag, not for
-  /// decisions), and the standard deviation of each of its components
-  Vector3 motion = Vector3::Zero();
-  double motion_std = 0.0;
   bool valid = false;                    ///< a sample has been received and is usable
   double age = 1e9;                      ///< s since the last sample (stale data grows this)
   double stamp = -1.0;                   ///< s, measurement time of the latest sample (-1: none); a new sample changes it

@@ -28,8 +28,6 @@ TEST(PerceptionConfig, ShippedFileIsTheDefaults) {
   EXPECT_DOUBLE_EQ(c.estimator.rotation_prediction_horizon, d.rotation_prediction_horizon);
   EXPECT_DOUBLE_EQ(c.estimator.filter.acceleration_noise, d.filter.acceleration_noise);
   EXPECT_DOUBLE_EQ(c.estimator.filter.angular_acceleration_noise, d.filter.angular_acceleration_noise);
-  EXPECT_DOUBLE_EQ(c.estimator.motion_acceleration_noise, d.motion_acceleration_noise);
-  EXPECT_GT(c.estimator.motion_acceleration_noise, c.estimator.filter.acceleration_noise);  // the fast one is faster
   EXPECT_NEAR(c.estimator.filter.rotation_noise, d.filter.rotation_noise, 1e-12);
   EXPECT_DOUBLE_EQ(c.estimator.prediction_significance, d.prediction_significance);
   EXPECT_EQ(c.estimator.smooth_rotations, d.smooth_rotations);
@@ -62,8 +60,6 @@ TEST(PerceptionConfig, ReadsEverySectionAndRejectsBadValues) {
   EXPECT_NE(errorOf("gates: {workspace_min: [0, 0, 0], workspace_max: [1, 0, 1]}\n").find("workspace_max"),
             std::string::npos);
   EXPECT_NE(errorOf("kalman: {acceleration_noise: 0}\n").find("acceleration_noise"), std::string::npos);
-  EXPECT_NE(errorOf("kalman: {motion_acceleration_noise: -1}\n").find("motion_acceleration_noise"), std::string::npos);
-  EXPECT_DOUBLE_EQ(parse("kalman: {motion_acceleration_noise: 0}\n").estimator.motion_acceleration_noise, 0.0);  // off
   EXPECT_NE(errorOf("prediction_horizon: 2\n").find("prediction_horizon"), std::string::npos);
 }
 

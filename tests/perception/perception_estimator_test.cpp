@@ -162,44 +162,6 @@ TEST(PerceptionEstimator, LatencyIsCompensatedByPrediction) {
   EXPECT_NEAR(x1 - x0, 0.01, 1e-3);
 }
 
-// The fast filter (motion_acceleration_noise) knows a hand that starts to move
-// sooner than the steady one the decisions read: a hand at rest that
-// accelerates at 3 m/s^2 (a person taking the object away) is read at half
-// its true speed by the steady filter 0.1 s into the motion; the fast one
-// reads most of it. At rest both read no motion beyond their noise, and
-// without a fast filter the motion is the velocity itself.
-TEST(PerceptionEstimator, TheFastFilterKnowsAMotionsOnsetSoonerThanTheSteadyOne) {
-  EstimatorSettings cfg;
-  cfg.motion_acceleration_noise = 1.0;
-  PerceptionEstimator est(cfg), plain;  // plain: no fast filter
-  const double period = 1.0 / 60, onset = 1.0, accel = 3.0;
-  double steady = 0.0, fast = 0.0, truth = 0.0, fast_std = 0.0, steady_std = 0.0;
-  for (int k = 0; k <= 66; ++k) {  // rest for 1 s, then 0.1 s of the motion
-    const double t = k * period, moving = std::max(0.0, t - onset);
-    const PoseSample s = at(t, 0.5 + 0.5 * accel * moving * moving);
-    ASSERT_TRUE(est.addSample(s));
-    ASSERT_TRUE(plain.addSample(s));
-    const auto& e = est.estimate(t, ObjectHolder::Person);
-    if (k == 59) {  // at rest, just before the onset: the std's are honest about the noise
-      EXPECT_LT(e.human.hand_motion.norm(), 2.0 * e.human.hand_motion_std);
-      fast_std = e.human.hand_motion_std;
-      steady_std = e.human.hand_speed_std;
-    }
-    steady = e.human.hand_velocity.x();
-    fast = e.human.hand_motion.x();
-    truth = accel * moving;
-    const auto& p = plain.estimate(t, ObjectHolder::Person);
-    EXPECT_EQ(p.human.hand_motion, p.human.hand_velocity.head<3>());
-    EXPECT_DOUBLE_EQ(p.human.hand_motion_std, p.human.hand_speed_std);
-    // the object the hand carries moves with it (no tracked object: carried rigidly)
-    EXPECT_NEAR(e.object.motion.x(), e.human.hand_motion.x(), 1e-9);
-  }
-  ASSERT_NEAR(truth, 0.3, 0.01);
-  EXPECT_LT(steady, 0.5 * truth);  // the steady filter lags the onset
-  EXPECT_GT(fast, 0.7 * truth);    // the fast one does not, much
-  EXPECT_GT(fast_std, steady_std);  // and it says it is the noisier
-}
-
 // issue 16: a latency above max_latency (0.1 s, while the scenario contract
 // allows 1 s) made every sample stale and the robot never moved
 TEST(PerceptionEstimator, ALatencyTheContractAllowsIsNotStale) {

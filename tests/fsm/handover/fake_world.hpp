@@ -277,10 +277,6 @@ struct World {
     in.hand.age = age;
     in.object.pose = objectPose();
     in.object.velocity.head<3>() = person_holds ? Vector3(hand_vel + jitter) : tcp_vel;
-    // one estimate of the motion: the fast one reads as the steady one here
-    in.hand.motion = in.hand.velocity.head<3>();
-    in.object.motion = in.object.velocity.head<3>();
-    in.hand.motion_std = in.object.motion_std = speed_std;
     in.object.valid = !dropout;
     in.object.age = age;
     if (knows_rest) {  // a perfect reach prediction: where the hand's move ends
