@@ -133,7 +133,7 @@ double featurePairDrift(const ClosestFeature& f1, const Vector3& omega1, const C
   const Vector3& u2 = f2.u;
   const Vector3 u1dot = in1 ? Vector3(omega1.cross(u1)) : Vector3::Zero();
   const Vector3 u2dot = in2 ? Vector3(omega2.cross(u2)) : Vector3::Zero();
-  // (dv + s_dot u1 - t_dot u2).u_k + D n.u_k_dot = 0 for each segment k the point lies inside
+  // (dv + s_dot u1 - t_dot u2).u_k + D n.u_k_dot = 0 for each line k its closest point lies inside
   double s_dot = 0.0, t_dot = 0.0;
   const double r1 = in1 ? -dv.dot(u1) - D * n.dot(u1dot) : 0.0;
   const double r2 = in2 ? -dv.dot(u2) - D * n.dot(u2dot) : 0.0;
@@ -245,13 +245,13 @@ void updateCollisions(const CollisionModel& cm, CollisionData& cd, const Model& 
     // between capsules, with the closest points' relative motion (featurePairDrift)
     const Vector3 omega1 = data.body_velocity[a.body].tail<3>();
     if (o.shape.kind == ShapeSpec::Kind::kBox) {
-      ClosestFeature edge;
-      const int on = res.penetrating ? 0 : boxFeature(c2, cd.body_pose[io], o.shape.size, edge.u);
+      ClosestFeature box_feature;  // an edge (a line) or a corner (a point)
+      const int on = res.penetrating ? 0 : boxFeature(c2, cd.body_pose[io], o.shape.size, box_feature.u);
       if (on == 1) {
         res.drift = n.dot(acc1 - acc2) + omega2.cross(n).dot(dv);
       } else {
-        edge.in = on == 2;
-        res.drift = featurePairDrift(segmentFeature(cd, ia, c1), omega1, edge, omega2, n, D, dv, acc1 - acc2);
+        box_feature.in = on == 2;
+        res.drift = featurePairDrift(segmentFeature(cd, ia, c1), omega1, box_feature, omega2, n, D, dv, acc1 - acc2);
       }
     } else {
       res.drift = featurePairDrift(segmentFeature(cd, ia, c1), omega1, segmentFeature(cd, io, c2), omega2, n, D, dv,
