@@ -28,6 +28,14 @@ struct Fixture {
     updateCollisions(cm, cd, m, data, env);
     return cd.results[k];
   }
+  // the arm at (q, v) and a person whose hand is `offset` from the TCP (into `env`): the pairs
+  std::vector<PairResult> personNearTcp(const Vector7& q, const Vector7& v, const Vector3& offset, std::mt19937& rng,
+                                        CollisionEnvironment& env) {
+    forwardKinematics(m, data, q, v);
+    env = personAt(framePlacement(m, data, m.frameId("tcp")).translation() + offset, rng);
+    updateCollisions(cm, cd, m, data, env);
+    return cd.results;
+  }
   // usable for differentiation: separated cores, not touching the surfaces
   bool smooth(const PairResult& r) const { return r.active && !r.penetrating && r.core_distance > 5e-3; }
 };
@@ -126,11 +134,8 @@ TEST(CollisionDistances, DriftIsTheSecondDerivativeOfTheDistanceForCapsulePairs)
   const double parallel = std::cos(10.0 * M_PI / 180.0);  // the slide rate is held near parallel
   for (int trial = 0; trial < 40; ++trial) {
     const Vector7 q = randomConfiguration(f.m, rng), v = randomVelocity(rng, 1.5), acc = randomVelocity(rng, 3.0);
-    forwardKinematics(f.m, f.data, q, v);
-    const Vector3 tcp = framePlacement(f.m, f.data, f.m.frameId("tcp")).translation();
-    const CollisionEnvironment env = personAt(tcp + Vector3(0.15, -0.05, 0.0), rng);
-    updateCollisions(f.cm, f.cd, f.m, f.data, env);
-    const std::vector<PairResult> base = f.cd.results;
+    CollisionEnvironment env;
+    const std::vector<PairResult> base = f.personNearTcp(q, v, Vector3(0.15, -0.05, 0.0), rng, env);
     for (int k = 0; k < f.cm.numPairs(); ++k) {
       const PairResult& r = base[k];
       const Kind kind = f.kindOf(k);
@@ -186,11 +191,8 @@ TEST(CollisionDistances, DriftIsTheSecondDerivativeOfTheDistanceAtABoxsEdgesAndC
   };
   for (int trial = 0; trial < 60; ++trial) {
     const Vector7 q = randomConfiguration(f.m, rng), v = randomVelocity(rng, 1.5), acc = randomVelocity(rng, 3.0);
-    forwardKinematics(f.m, f.data, q, v);
-    const Vector3 tcp = framePlacement(f.m, f.data, f.m.frameId("tcp")).translation();
-    const CollisionEnvironment env = personAt(tcp + Vector3(0.12, -0.04, 0.02), rng);
-    updateCollisions(f.cm, f.cd, f.m, f.data, env);
-    const std::vector<PairResult> base = f.cd.results;
+    CollisionEnvironment env;
+    const std::vector<PairResult> base = f.personNearTcp(q, v, Vector3(0.12, -0.04, 0.02), rng, env);
     for (int k = 0; k < f.cm.numPairs(); ++k) {
       const PairResult& r = base[k];
       const int io = f.cm.pairs[k].other_body;
