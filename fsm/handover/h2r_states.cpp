@@ -177,6 +177,7 @@ void Approach::configure(const YamlReader& def) {
 
 void Approach::onStart(HandoverContext& ctx) {
   blind_ = false;
+  beside_ = false;
   struck_ = false;
   withdrawal_.restart();
   take_.restart();
@@ -206,6 +207,20 @@ void Approach::slideIn(HandoverContext& ctx, bool arrived) {
     // along the line, not diagonally past the hand that holds the object
     f.fit -= std::abs((grasp.translation() - ctx.in.tcp_pose.translation()).dot(grasp.linear().col(0)));
     goal = funnelStandoff(f, mouth, funnel_.margin);
+  }
+  // the TCP in the grasp frame: past the mouth along the approach axis and off the approach line
+  // by more than half the opening, the gripper stands beside the object, not in front of it
+  const Vector3 tcp = grasp.inverse() * ctx.in.tcp_pose.translation();
+  const double off_line = tcp.head<2>().norm();
+  beside_ = tcp.z() > -mouth && off_line > 0.5 * ctx.params->gripper_open_width;
+  if (stall_.detouring()) {
+    // stalled there (the palm against the object, g881_00174, g893_00092: 8-13 cm short for 10 s):
+    // line up in front of it again, as far back along the axis as the TCP is off the line, so
+    // the way to the line-up point leads away from the object; back on the line, the funnel goes on
+    if (off_line <= near_distance_)
+      stall_.endDetour(ctx.time);
+    else
+      goal = std::max(goal, mouth + off_line);
   }
   const double standoff = slideToward(ctx, ctrl(), funnel_, goal, ctx.tracking_shift, f.closing_speed);
   // in the funnel the gripper and the hand share the object, as in Grasp: the rules that keep
@@ -241,6 +256,7 @@ bool Approach::onRun(HandoverContext& ctx) {
   } else if (!blind) {
     // the best reachable target as the person moves (a new grasp starts from the funnel's mouth)
     const bool switched = followPlan(ctx, ctrl(), hand_, standoff_);
+    beside_ = false;  // slideIn tells
     if (funnel_.enabled() && !switched) slideIn(ctx, arrived);
     if (hand_ && lift_ > 0.0) followDescent(ctx, ctrl(), lift_, lift_speed_, dt);
     // the gains follow the tracked target's speed: a take's target (where the reach ends) stands
@@ -254,7 +270,8 @@ bool Approach::onRun(HandoverContext& ctx) {
     else
       setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow,
                             (hand_ ? body.velocity : ctx.in.target_velocity).head<3>().norm(), !hand_);
-    stall_.watch(ctx, ctrl(), hand_, positionError(ctx.in.tcp_pose, ctx.in.target_pose), arrived && plan.valid);
+    stall_.watch(ctx, ctrl(), hand_, positionError(ctx.in.tcp_pose, ctx.in.target_pose), arrived, plan.valid,
+                 beside_);
   }
   if (withdrawal_.withdrawn(ctx, hand_)) {
     setOutput(withdrawn_);

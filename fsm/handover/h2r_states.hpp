@@ -106,13 +106,14 @@ class Approach : public HandoverState {
 
  private:
   /// A take's funnel: the standoff toward the funnel's, once the object has
-  /// `arrived`. RT safe.
+  /// `arrived`; after a stall beside the object (StallRecovery::detouring),
+  /// lined up as far back again as the TCP is off the approach line. RT safe.
   void slideIn(HandoverContext& ctx, bool arrived);
 
   bool hand_;
   int near_, withdrawn_, pulled_ = -1;
   ReceiverTake take_;  ///< a give: a receiver who takes the object on its way to them
-  StallRecovery stall_;  ///< stall_time: a stalled approach goes on in joint space
+  StallRecovery stall_;  ///< stall_time: a stalled approach goes on in joint space, or around the object
   WithdrawalWatch withdrawal_;  ///< the person leaves: Withdrawn
   double near_distance_ = 0.1;
   double near_orientation_ = M_PI;  ///< rad
@@ -123,6 +124,7 @@ class Approach : public HandoverState {
   bool blind_ = false;              ///< holding: the tracked body's data is stale
   double yield_force_ = 0.0;        ///< N on the empty gripper that is a strike (0: off)
   bool struck_ = false;             ///< struck: the follow gains for the rest of the approach
+  bool beside_ = false;             ///< the gripper beside the object it lines up on (slideIn)
   GraspFunnel funnel_;              ///< a take's continuous approach; max_standoff 0: none
 };
 

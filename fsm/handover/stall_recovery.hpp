@@ -4,7 +4,12 @@
 // reach (a low box taken from the side: joint 6 at its limit 4 cm short of
 // the pre-grasp until the person gave up). The arm then moves in joint space
 // to the planner's configuration for the target (the posture task alone,
-// tracking off) and tracks again from there. RT safe.
+// tracking off) and tracks again from there.
+// A stall with every joint free and the gripper beside the object it lines
+// up on (the TCP past its line-up point and off the approach line) is the
+// object in the way, not a limit: a joint-space move would go through it.
+// The approach then takes a detour (detouring()): it lines up from in front
+// of the object again. RT safe.
 #pragma once
 
 #include <limits>
@@ -23,10 +28,18 @@ class StallRecovery {
   /// Moving in joint space (tracking off).
   bool moving() const { return moving_; }
   /// One tracking cycle: `error` (m) from the TCP to the tracked target;
-  /// `settled` the target is at rest and planned. Starts the joint-space move
-  /// (to `hand` ? the presentation's : the grasp's IK configuration, the
-  /// pre-target's while backed off) when it stalled.
-  void watch(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double error, bool settled);
+  /// `at_rest` the target is at rest; `planned` the planner reaches it now;
+  /// `beside` the gripper stands beside the object it lines up on. Starts the
+  /// joint-space move (to `hand` ? the presentation's : the grasp's IK
+  /// configuration, the pre-target's while backed off) when it stalled at a
+  /// joint limit with a plan, the detour when it stalled beside the object.
+  void watch(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double error, bool at_rest, bool planned,
+             bool beside = false);
+  /// Stalled beside the object: the caller lines up from in front of it
+  /// again, and ends the detour (endDetour) once back on the approach line.
+  bool detouring() const { return detour_; }
+  /// Back on the approach line: progress is owed again from `time` (s).
+  void endDetour(double time);
   /// One joint-space cycle: true once the move is over (at the
   /// configuration, too long, or the target moved or changed): the caller
   /// tracks again.
@@ -47,6 +60,7 @@ class StallRecovery {
   double best_time_ = 0.0;
   double started_ = 0.0;
   bool moving_ = false;
+  bool detour_ = false;
   int index_ = -1;       ///< the plan's candidate when the move started
   Vector7 goal_ = Vector7::Zero();
 };

@@ -161,6 +161,57 @@ TEST(PlannedTargets, AnApproachHeldShortWithItsJointsFreeKeepsTracking) {
   EXPECT_EQ(rig.ctl.count("tracking off"), off_before);
 }
 
+// Held short beside the object it lines up on (the TCP past the funnel's mouth
+// and 10 cm off the approach line, the palm against the object: g881_00174)
+// with every joint free: after stall_time without progress the approach lines
+// up from in front of the object again, as far back along the approach axis as
+// the TCP is off the line, tracking on; back on the line, the funnel goes on.
+TEST(PlannedTargets, AnApproachStalledBesideTheObjectLinesUpInFrontOfItAgain) {
+  Rig rig;
+  rig.world.joint_limit_margin = 0.3;  // rad: no joint at its limit
+  const TrackingPlan plan = sidePlan(3, 0.1);  // the approach axis along world +x
+  offerUntilApproach(rig, plan);
+  ASSERT_TRUE(rig.runUntil([&] { return rig.world.hand_vel.norm() == 0.0; }, 5.0));  // the offer rests
+  const HandoverContext& ctx = rig.fsm->context();
+  const double mouth = ctx.tracking_standoff;
+  ASSERT_GT(mouth, 0.0);
+  // the gripper stands beside the object: at its depth along the axis, 10 cm across it, and stays
+  const Vector3 grasp = (rig.world.objectPose() * plan.target_in_observed).translation();
+  rig.world.tcp.translation() = grasp + Vector3(0.0, 0.10, 0.0);
+  rig.world.arm_stuck = true;
+  const double stuck = rig.world.time;
+  ASSERT_TRUE(rig.runUntil([&] { return ctx.tracking_standoff > mouth + 0.09; }, 3.0)) << ctx.tracking_standoff;
+  EXPECT_GT(rig.world.time - stuck, 0.4);  // after stall_time, not at once
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "/Approach")) << rig.fsm->activePath();
+  EXPECT_TRUE(rig.ctl.tracking);  // no move in joint space: it would go through the object
+  rig.runFor(0.5);
+  EXPECT_LT(ctx.tracking_standoff, mouth + 0.10 + 1e-6);  // as far back as it is off the line
+  // free again, it comes back onto the line from in front, and the funnel takes over
+  rig.world.arm_stuck = false;
+  ASSERT_TRUE(rig.runUntil([&] { return ctx.tracking_standoff <= mouth + 1e-6; }, 3.0)) << ctx.tracking_standoff;
+  const Vector3 tcp = rig.world.tcp.translation() - grasp;
+  EXPECT_LT(tcp.x(), -mouth + 0.02);  // in front of the object along the axis, not beside it
+}
+
+// Held short at the object's depth but on the approach line (the funnel's own slide
+// pushed by the object), or beside it with a joint at its limit: no detour.
+TEST(PlannedTargets, OnlyAGripperBesideTheObjectWithItsJointsFreeDetours) {
+  for (const bool at_limit : {false, true}) {
+    Rig rig;
+    rig.world.joint_limit_margin = at_limit ? 0.04 : 0.3;
+    const TrackingPlan plan = sidePlan(3, 0.1);
+    offerUntilApproach(rig, plan);
+    ASSERT_TRUE(rig.runUntil([&] { return rig.world.hand_vel.norm() == 0.0; }, 5.0));
+    const HandoverContext& ctx = rig.fsm->context();
+    const double mouth = ctx.tracking_standoff;
+    const Vector3 grasp = (rig.world.objectPose() * plan.target_in_observed).translation();
+    rig.world.tcp.translation() = grasp + Vector3(0.0, at_limit ? 0.10 : 0.03, 0.0);
+    rig.world.arm_stuck = true;
+    rig.runFor(2.0);
+    EXPECT_LE(ctx.tracking_standoff, mouth + 1e-6) << "at limit " << at_limit;
+  }
+}
+
 TEST(PlannedTargets, WithoutAPlanTheDeclaredGraspIsLeftToTheController) {
   Rig rig;
   rig.world.moveHand(kMeet, 0.5);
