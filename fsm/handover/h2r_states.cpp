@@ -209,12 +209,14 @@ void Approach::slideIn(HandoverContext& ctx, bool arrived) {
     goal = funnelStandoff(f, mouth, funnel_.margin);
   }
   // the TCP in the grasp frame: past the mouth along the approach axis and off the approach line
-  // by more than half the opening, the gripper stands beside the object, not in front of it
+  // by more than it must be near it to arrive (near_distance), the gripper stands beside the
+  // object or on its edge, not in front of it
   const Vector3 tcp = grasp.inverse() * ctx.in.tcp_pose.translation();
   const double off_line = tcp.head<2>().norm();
-  beside_ = tcp.z() > -mouth && off_line > 0.5 * ctx.params->gripper_open_width;
+  beside_ = tcp.z() > -mouth && off_line > near_distance_;
   if (stall_.detouring()) {
-    // stalled there (the palm against the object, g881_00174, g893_00092: 8-13 cm short for 10 s):
+    // stalled there (the palm against a tube's side, g881_00174: 12 cm short for 10 s; the finger
+    // capsule on a box's edge, g907_00138: 4 cm):
     // line up in front of it again, as far back along the axis as the TCP is off the line, so
     // the way to the line-up point leads away from the object; back on the line, the funnel goes on
     if (off_line <= near_distance_)

@@ -193,7 +193,7 @@ TEST(PlannedTargets, AnApproachStalledBesideTheObjectLinesUpInFrontOfItAgain) {
   EXPECT_LT(tcp.x(), -mouth + 0.02);  // in front of the object along the axis, not beside it
 }
 
-// Held short at the object's depth but on the approach line (the funnel's own slide
+// Held short at the object's depth but within near_distance of the approach line (the funnel's own slide
 // pushed by the object), or beside it with a joint at its limit: no detour.
 TEST(PlannedTargets, OnlyAGripperBesideTheObjectWithItsJointsFreeDetours) {
   for (const bool at_limit : {false, true}) {
@@ -205,7 +205,7 @@ TEST(PlannedTargets, OnlyAGripperBesideTheObjectWithItsJointsFreeDetours) {
     const HandoverContext& ctx = rig.fsm->context();
     const double mouth = ctx.tracking_standoff;
     const Vector3 grasp = (rig.world.objectPose() * plan.target_in_observed).translation();
-    rig.world.tcp.translation() = grasp + Vector3(0.0, at_limit ? 0.10 : 0.03, 0.0);
+    rig.world.tcp.translation() = grasp + Vector3(0.0, at_limit ? 0.10 : 0.01, 0.0);
     rig.world.arm_stuck = true;
     rig.runFor(2.0);
     EXPECT_LE(ctx.tracking_standoff, mouth + 1e-6) << "at limit " << at_limit;
