@@ -312,7 +312,6 @@ void Grasp::configure(const YamlReader& def) {
   }
   if (def.has("regrips")) max_regrips_ = static_cast<int>(readRange(def, "regrips", 0.0, 5.0));
   if (def.has("release_distance")) release_distance_ = readRange(def, "release_distance", 0.0, 0.3);
-  if (def.has("regrip_share")) regrip_share_ = readRange(def, "regrip_share", 0.05, 1.0);
 }
 
 void Grasp::onStart(HandoverContext& ctx) {
@@ -405,9 +404,8 @@ bool Grasp::jammed(const HandoverContext& ctx) {
 
 bool Grasp::regrip(HandoverContext& ctx) {
   if (regrips_ >= max_regrips_ || !hand_at_close_known_ || !fresh(ctx.in.hand, ctx.params->max_data_age) ||
-      (ctx.in.hand.pose.translation() - hand_at_close_).norm() > release_distance_ ||
-      ctx.in.load_share >= regrip_share_)
-    return false;  // the person may have let go (seen or felt): opening now would drop it (g893_00253)
+      (ctx.in.hand.pose.translation() - hand_at_close_).norm() > release_distance_)
+    return false;  // the person may have let go: opening now would drop it
   const FingerFit f = fitNow(ctx);
   if (f.near_face > 1e6 || !(f.hold_depth > 0.0)) return false;
   const Isometry object = correctedObject(ctx);

@@ -170,13 +170,10 @@ class Approach : public HandoverState {
 /// hold depth (FingerFit::hold_depth), they pinch a round side short of it
 /// (a bottle lying across them, seen 3 cm off by a calibration error, rolled
 /// out of a 5.0 cm pinch of its 6.6 cm): while the person still holds the
-/// object (their hand has not moved from it by release_distance, and the
-/// robot carries less than regrip_share of its weight: a person who opens
-/// their hand lets the weight come over before the hand moves off), the
+/// object (their hand has not moved from it by release_distance), the
 /// fingers open, the grasp moves along the approach axis by as much as the
 /// pads fell short, and they close again. regrips (optional, default 0) times
-/// per attempt; release_distance (m, default 0.015); regrip_share (load
-/// share 0..1, default 1: the weight not felt).
+/// per attempt; release_distance (m, default 0.015).
 class Grasp : public HandoverState {
  public:
   Grasp();
@@ -223,7 +220,6 @@ class Grasp : public HandoverState {
   int max_regrips_ = 0;
   int regrips_ = 0;
   double release_distance_ = 0.015;  ///< m the hand moves off the object when it lets go
-  double regrip_share_ = 1.0;        ///< load share from which the person is letting go: no regrip
   bool reopening_ = false;           ///< a regrip: the fingers open before the grasp moves in
   Vector3 regrip_shift_ = Vector3::Zero();  ///< m, object frame, applied once they are open
   Vector3 hand_at_close_ = Vector3::Zero(); ///< m, world: the hand when the fingers closed (it stays: it holds on)
