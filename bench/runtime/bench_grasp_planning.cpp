@@ -10,8 +10,7 @@
 // BM_TakePlanning: a take's grasp per object sample, a bottle (declared side
 // grasp and the cylinder's shape families) swaying in a person's hand, their
 // arm and trunk as obstacles with what the shipped collision rules keep, and
-// the bottle's own shape (no pre-grasp inside it). Arg: 1 with the collision
-// model's hand box the fingers keep off (as the handover cycle plans), 0 without.
+// the bottle's own shape (no pre-grasp inside it).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -99,10 +98,6 @@ void BM_TakePlanning(benchmark::State& state) {
   const control::CollisionConfig cc = control::loadCollisionConfig(control::defaultCollisionConfigPath());
   s.trunk = runtime::trunkObstacles(cc.person.trunk, cc.person.free_arm_radius);
   s.keeps = runtime::personKeeps(control::buildCollisionModel(pandaModel(), cc));
-  if (state.range(0) != 0) {
-    s.hand_box = cc.person.hand_offset;
-    s.hand_box_half_extents = 0.5 * cc.person.hand_size;
-  }
   runtime::GraspPlanning planning(pandaModel(), s);
   control::Isometry torso = control::Isometry::Identity();  // facing the robot, 0.45 m beyond the hand
   torso.linear() = Eigen::AngleAxisd(M_PI, control::Vector3::UnitZ()).toRotationMatrix();
@@ -126,7 +121,7 @@ void BM_TakePlanning(benchmark::State& state) {
   }
   state.counters["planned"] = static_cast<double>(planned) / static_cast<double>(updates);
 }
-BENCHMARK(BM_TakePlanning)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_TakePlanning)->Unit(benchmark::kMicrosecond);
 
 BENCHMARK(BM_PresentationPlanning)->Args({0, 0})->Args({30, 0})->Args({30, 1})->Unit(benchmark::kMicrosecond);
 

@@ -142,9 +142,9 @@ double keepShortfall(const Model& model, const ChainPoses& poses, const Obstacle
   double shortfall = 0.0;
   for (int k = 0; k < num_obstacles; ++k) {
     const ObstacleCapsule& o = obstacles[k];
-    if (o.gripper_works_here || o.held_object) continue;  // the fingers close in it: workZoneClearance
+    // the fingers close in it: workZoneClearance, fingerClearance
+    if (o.gripper_works_here || o.held_object || o.fingers_only) continue;
     for (const Capsule& c : model.capsules) {
-      if (o.fingers_only && c.role != CapsuleRole::kFingertip) continue;  // only the fingers close beside it
       shortfall = std::max(shortfall, keepOf(c, o) - capsuleDistance(poses, c, o));
     }
   }
@@ -158,7 +158,7 @@ double fingerClearance(const Model& model, const ChainPoses& poses, const Obstac
     const ObstacleCapsule& o = obstacles[k];
     if (!o.fingers_only) continue;
     for (const Capsule& c : model.capsules)
-      if (c.role == CapsuleRole::kFingertip) best = std::min(best, capsuleDistance(poses, c, o));
+      if (c.role == CapsuleRole::kFingertip) best = std::min(best, capsuleDistance(poses, c, o) - o.keep_gripper);
   }
   return best;
 }

@@ -46,15 +46,13 @@ struct ObstacleCapsule {
   bool held_object = false;
   /// The hand that holds the object as the collision constraints see it
   /// while the fingers close on the object in it (the `taking` rule's hand
-  /// box): only the fingertip capsules are measured against it, in it
-  /// (fingerClearance < 0: refused) or nearer than they keep from it
-  /// (keep_gripper, in keepShortfall: scored); every other check leaves it
-  /// out (the palm and the arm keep out of the hand's own obstacle,
+  /// box): only the fingertip capsules are measured against it, kept
+  /// keep_gripper from it (fingerClearance); every other check leaves it out
+  /// (the palm and the arm keep out of the hand's own obstacle,
   /// gripper_works_here). A grasp whose fingers would sit in that box is one
   /// the constraints hold short of: a box taken from the side stopped 4 cm
   /// short with the fingers against the hand until the person gave up
-  /// (g893_00082). Refused only inside it: refused within the keep too, grasps
-  /// the fingers reach within a millimetre or two of it were lost.
+  /// (g893_00082).
   bool fingers_only = false;
 };
 
@@ -70,9 +68,7 @@ double segmentBoxDistance(const Vector3& p0, const Vector3& p1, const Vector3& c
 /// the largest amount (m) by which any capsule, the fingertips included,
 /// comes nearer an obstacle than its keep (keep_arm, keep_gripper); 0 when
 /// all keep clear. Obstacles where the gripper works are left out (their
-/// fingers close in them: workZoneClearance); against the hand the fingers
-/// close beside (ObstacleCapsule::fingers_only) only the fingertip capsules
-/// count.
+/// fingers close in them: workZoneClearance).
 double keepShortfall(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
                      int num_obstacles);
 
@@ -108,9 +104,10 @@ double personBodyClearance(const Model& model, const ChainPoses& poses, const Ob
                           int num_obstacles);
 
 /// Smallest surface distance between the fingertip capsules
-/// (CapsuleRole::kFingertip) and the hand they close beside
-/// (ObstacleCapsule::fingers_only), m, their keeps left out; negative: the
-/// fingers would close in that hand; +infinity without such obstacles.
+/// (CapsuleRole::kFingertip) and the obstacles they keep off while they close
+/// (ObstacleCapsule::fingers_only), beyond what the constraints keep from
+/// each (keep_gripper), m; negative: the constraints hold the fingers short of
+/// this configuration; +infinity without such obstacles.
 double fingerClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
                        int num_obstacles);
 
