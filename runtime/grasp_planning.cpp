@@ -79,12 +79,7 @@ control::Vector3 receiverPull(const perception::HumanEstimate& person) {
 PersonKeeps personKeeps(const control::CollisionModel& model) {
   PersonKeeps k;
   for (const control::CollisionPair& p : model.pairs) {
-    const control::RuleScope scope = model.rule_scope[static_cast<std::size_t>(p.rule)];
-    if (scope == control::RuleScope::kTaking &&
-        model.bodies[static_cast<std::size_t>(p.other_body)].kind == control::CollisionBodyKind::kHumanHand &&
-        model.bodies[static_cast<std::size_t>(p.robot_body)].role == control::CapsuleRole::kFingertip)
-      k.fingers_from_holding_hand = std::max(k.fingers_from_holding_hand, p.margin + p.damper.s_dist);
-    if (control::whileSharing(scope)) continue;
+    if (control::whileSharing(model.rule_scope[static_cast<std::size_t>(p.rule)])) continue;
     PersonKeeps::Keep* keep = nullptr;
     switch (model.bodies[static_cast<std::size_t>(p.other_body)].kind) {
       case control::CollisionBodyKind::kHumanHand: keep = &k.hand; break;
@@ -216,31 +211,20 @@ int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool 
   obstacles_[1] = capsule(human.upper_arm, settings_.upper_arm_length, settings_.upper_arm_radius);
   keep(obstacles_[1], settings_.keeps.upper_arm);
   int n = 2;
-  // the hand box of the collision model, where the person's hand is
-  auto hand_box = [&](cg::ObstacleCapsule& box) {
-    box = cg::ObstacleCapsule{};
-    const control::Isometry X = human.hand * settings_.hand_box;
-    box.a = box.b = X.translation();
-    box.box_axes = X.linear();
-    box.box_half_extents = settings_.hand_box_half_extents;
-  };
   if (holding_hand) {
     // the hand that holds the object: the fingers work in it, the palm and the arm keep clear
     obstacles_[2] = capsule(human.hand, 0.0, settings_.hand_radius);
     obstacles_[2].gripper_works_here = true;
     keep(obstacles_[2], settings_.keeps.hand);
     n = 3;
-    if (!settings_.hand_box_half_extents.isZero()) {
-      // and the fingers close beside it, kept off it as the `taking` rules keep them
-      cg::ObstacleCapsule& box = obstacles_[static_cast<std::size_t>(n++)];
-      hand_box(box);
-      box.fingers_only = true;
-      box.keep_gripper = settings_.keeps.fingers_from_holding_hand;
-    }
   } else if (!settings_.hand_box_half_extents.isZero()) {
     // the hand the object goes into: the fingers come as near as the constraints let them (keepShortfall)
     cg::ObstacleCapsule& box = obstacles_[2];
-    hand_box(box);
+    box = cg::ObstacleCapsule{};
+    const control::Isometry X = human.hand * settings_.hand_box;
+    box.a = box.b = X.translation();
+    box.box_axes = X.linear();
+    box.box_half_extents = settings_.hand_box_half_extents;
     box.keep_only = true;
     keep(box, settings_.keeps.hand);
     n = 3;

@@ -50,9 +50,6 @@ struct PersonKeeps {
   };
   Keep hand, forearm, upper_arm, trunk;
   Keep object;  ///< from the object the person holds out (the gripper lines up in front of it)
-  /// m: what the `taking` rules keep the fingers from the hand box while they
-  /// close on the object in it (no sensing budget); 0 without such a rule.
-  double fingers_from_holding_hand = 0.0;
 };
 
 /// The largest clearance the `always` and `apart` pair rules keep between
@@ -155,8 +152,8 @@ class GraspPlanning : public fsm::PlannerInterface {
  private:
   static void copyChoice(const control::grasp::GraspChoice& c, fsm::TrackingPlan& plan);
   /// Fills obstacles_ with the person's arm, their hand where it holds the
-  /// object (holding_hand: a take, with the hand box the fingers keep off
-  /// when settings give one; otherwise the hand box, keep-only) and their trunk (torso given); returns their number.
+  /// object (holding_hand: a take; otherwise the hand box, keep-only, when
+  /// settings give one) and their trunk (torso given); returns their number.
   int personObstacles(const perception::HumanEstimate& human, bool holding_hand, const control::Isometry* torso);
   /// How many of personObstacles' last ones are the trunk (torso given).
   int trunkObstacles(const control::Isometry* torso) const;

@@ -89,8 +89,7 @@ double armClearance(const Model& model, const ChainPoses& poses, const ObstacleC
   for (const Capsule& c : model.capsules) {
     for (int k = 0; k < num_obstacles; ++k) {
       const ObstacleCapsule& o = obstacles[k];
-      if (o.keep_only || o.held_object || o.fingers_only || (o.gripper_works_here && c.role == CapsuleRole::kFingertip))
-        continue;
+      if (o.keep_only || o.held_object || (o.gripper_works_here && c.role == CapsuleRole::kFingertip)) continue;
       best = std::min(best, capsuleDistance(poses, c, o));
     }
   }
@@ -127,7 +126,7 @@ double personBodyClearance(const Model& model, const ChainPoses& poses, const Ob
   double best = std::numeric_limits<double>::infinity();
   for (int k = 0; k < num_obstacles; ++k) {
     const ObstacleCapsule& o = obstacles[k];
-    if (o.keep_only || o.held_object || o.fingers_only) continue;
+    if (o.keep_only || o.held_object) continue;
     for (const Capsule& c : model.capsules) {
       // the gripper works in the person's hand (workZoneClearance); the arm's links keep clear of it
       if (o.gripper_works_here && c.role != CapsuleRole::kArm) continue;
@@ -142,25 +141,12 @@ double keepShortfall(const Model& model, const ChainPoses& poses, const Obstacle
   double shortfall = 0.0;
   for (int k = 0; k < num_obstacles; ++k) {
     const ObstacleCapsule& o = obstacles[k];
-    // the fingers close in it: workZoneClearance, fingerClearance
-    if (o.gripper_works_here || o.held_object || o.fingers_only) continue;
+    if (o.gripper_works_here || o.held_object) continue;  // the fingers close in it: workZoneClearance
     for (const Capsule& c : model.capsules) {
       shortfall = std::max(shortfall, keepOf(c, o) - capsuleDistance(poses, c, o));
     }
   }
   return shortfall;
-}
-
-double fingerClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
-                       int num_obstacles) {
-  double best = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < num_obstacles; ++k) {
-    const ObstacleCapsule& o = obstacles[k];
-    if (!o.fingers_only) continue;
-    for (const Capsule& c : model.capsules)
-      if (c.role == CapsuleRole::kFingertip) best = std::min(best, capsuleDistance(poses, c, o) - o.keep_gripper);
-  }
-  return best;
 }
 
 double lowestArmPoint(const Model& model, const ChainPoses& poses, int first_body) {

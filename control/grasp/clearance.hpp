@@ -44,16 +44,6 @@ struct ObstacleCapsule {
   /// tube, the grasp below its upper end) held the gripper against the
   /// object for 10 s until the approach gave up.
   bool held_object = false;
-  /// The hand that holds the object as the collision constraints see it
-  /// while the fingers close on the object in it (the `taking` rule's hand
-  /// box): only the fingertip capsules are measured against it, kept
-  /// keep_gripper from it (fingerClearance); every other check leaves it out
-  /// (the palm and the arm keep out of the hand's own obstacle,
-  /// gripper_works_here). A grasp whose fingers would sit in that box is one
-  /// the constraints hold short of: a box taken from the side stopped 4 cm
-  /// short with the fingers against the hand until the person gave up
-  /// (g893_00082).
-  bool fingers_only = false;
 };
 
 /// Smallest distance between the segments [p0, p1] and [q0, q1] (m).
@@ -102,14 +92,6 @@ double heldObjectClearance(const Model& model, const ChainPoses& poses, const Ob
 /// to come nearer than its constraints let it; +infinity without obstacles.
 double personBodyClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
                           int num_obstacles);
-
-/// Smallest surface distance between the fingertip capsules
-/// (CapsuleRole::kFingertip) and the obstacles they keep off while they close
-/// (ObstacleCapsule::fingers_only), beyond what the constraints keep from
-/// each (keep_gripper), m; negative: the constraints hold the fingers short of
-/// this configuration; +infinity without such obstacles.
-double fingerClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
-                       int num_obstacles);
 
 /// Lowest point (world z, m) of the capsules of bodies `first_body`.. (the
 /// base and link 1 stand on the table and are left out with first_body = 2).

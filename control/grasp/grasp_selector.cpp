@@ -72,8 +72,6 @@ bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, 
   // (or the arm) in that hand is no grasp (a ball on the palm taken from the side: the palm
   // struck the hand under it)
   if (workZoneClearance(model_, poses, obstacles, num_obstacles) < 0.0) return false;
-  // nor one whose fingers the constraints keep off the hand short of it (fingers_only)
-  if (fingerClearance(model_, poses, obstacles, num_obstacles) < 0.0) return false;
   // nor one that brings any of it, the fingers too, nearer the person's arm or trunk than the collision
   // constraints let it go: the arm stopped short of it until the person gave up (g1_00184, a
   // ball on a palm taken at 45 degrees over the wrist)

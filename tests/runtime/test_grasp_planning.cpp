@@ -366,49 +366,6 @@ TEST(GraspPlanning, KeepsWhatTheShippedCollisionRulesKeepFromThePerson) {
   EXPECT_NEAR(k.object.gripper, object->margin + object->damper.s_dist, 1e-12);
   EXPECT_NEAR(k.object.arm, object->margin + object->damper.s_dist, 1e-12);
   EXPECT_GT(k.object.gripper, 0.0);
-  // the fingers keep the `taking` rule's sDist from the hand whose object they close on
-  const auto taking = std::find_if(cfg.pairs.begin(), cfg.pairs.end(),
-                                   [](const control::PairRule& r) { return r.name == "person_hand_gripper_taking"; });
-  ASSERT_NE(taking, cfg.pairs.end());
-  EXPECT_NEAR(k.fingers_from_holding_hand, taking->margin + taking->damper.s_dist, 1e-12);
-  EXPECT_GT(k.fingers_from_holding_hand, 0.0);
-}
-
-// The person's hand beside the bottle, where the fingers of the grasp chosen without
-// it would close: the constraints keep the fingers off that hand while they close, so
-// that grasp is one the arm stops short of (g893_00082: a box held 4 cm short for 5 s
-// until the person gave up); knowing the hand box, the planner takes another.
-TEST(GraspPlanning, ATakeKeepsTheFingersOffTheHandThatHoldsTheObject) {
-  GraspPlanningSettings s = bottleSettings(false);
-  s.keeps.fingers_from_holding_hand = 0.002;
-  const control::Vector3 at(0.55, 0.1, 0.35);
-  const perception::PerceptionEstimate e = offered(0.1, at);
-  GraspPlanning blind(panda(), s);  // no hand box: the fingers are not checked against the hand
-  blind.update(e, readyConfiguration(), false);
-  ASSERT_TRUE(blind.objectPlan().valid);
-  const control::Isometry blind_tcp = tcpPose(panda(), blind.objectPlan().q_target);
-  // a 3 cm hand box where one of those fingers closes: 6 cm along the closing axis (the bottle's radius is 3 cm)
-  s.hand_box_half_extents = control::Vector3(0.015, 0.015, 0.015);
-  s.hand_box.translation() = blind_tcp * control::Vector3(0.0, 0.06, 0.0) - e.human.hand.translation();
-  cg::ObstacleCapsule box;
-  box.a = box.b = (e.human.hand * s.hand_box).translation();
-  box.box_half_extents = s.hand_box_half_extents;
-  box.fingers_only = true;
-  box.keep_gripper = s.keeps.fingers_from_holding_hand;
-  auto fingers = [&](const control::Vector7& q) {
-    cg::ChainPoses poses;
-    cg::chainPoses(panda(), q, poses);
-    return cg::fingerClearance(panda(), poses, &box, 1);
-  };
-  ASSERT_LT(fingers(blind.objectPlan().q_target), 0.0) << "the blind grasp closes its fingers in the hand box";
-  GraspPlanning knowing(panda(), s);
-  knowing.update(e, readyConfiguration(), false);
-  ASSERT_TRUE(knowing.objectPlan().valid);
-  EXPECT_GE(fingers(knowing.objectPlan().q_target), 0.0);
-  // still a grasp on the bottle: the TCP on its axis, the approach horizontal
-  const control::Isometry tcp = tcpPose(panda(), knowing.objectPlan().q_target);
-  EXPECT_LT((tcp.translation() - at).head<2>().norm(), 1e-3);
-  EXPECT_LT(std::abs(tcp.linear().col(2).z()), 1e-3);
 }
 TEST(GraspPlanning, AHeldObjectWaitsOutOfTheWayOfTheReceiverWhoWillReachForIt) {
   // a receiver in front and to the right, their shoulder above the table; the

@@ -128,41 +128,6 @@ TEST(Clearance, AHeldObjectCountsOnlyForTheHeldObjectClearanceAndThereTheFingert
   EXPECT_GT(heldObjectClearance(model, poses, &ball, 1), 0.0);
 }
 
-// the hand box the fingers keep off while they close: only the fingertip capsule is measured
-// against it, beyond its keep; no other check counts it
-TEST(Clearance, AHandTheFingersKeepOffCountsOnlyTheFingertipsBeyondTheirKeep) {
-  const Model& model = testing::panda();
-  ChainPoses poses;
-  // a hand 3 cm below the TCP (gripper pointing down): inside the fingertip capsule's reach, clear of the palm
-  ObstacleCapsule hand = sphereBelowTheReadyTcp(0.03, 0.02, poses);
-  const Isometry tcp = chainFramePose(model, poses, model.frameId("tcp"));
-  const double inf = std::numeric_limits<double>::infinity();
-  ObstacleCapsule plain = hand;
-  const double overlap = armClearance(model, poses, &plain, 1);
-  ASSERT_LT(overlap, 0.0);  // the fingertip capsule overlaps it
-  hand.fingers_only = true;
-  hand.keep_gripper = 0.002;
-  EXPECT_EQ(armClearance(model, poses, &hand, 1), inf);
-  EXPECT_EQ(workZoneClearance(model, poses, &hand, 1), inf);
-  EXPECT_EQ(personBodyClearance(model, poses, &hand, 1), inf);
-  EXPECT_EQ(heldObjectClearance(model, poses, &hand, 1), inf);
-  EXPECT_EQ(keepShortfall(model, poses, &hand, 1), 0.0);
-  EXPECT_EQ(fingerClearance(model, poses, &plain, 1), inf);  // not one the fingers keep off
-  // the fingertip capsule's own distance, less the keep
-  double fingertip = inf;
-  for (const Capsule& c : model.capsules) {
-    if (c.role != CapsuleRole::kFingertip) continue;
-    const Vector3 a = poses.oMb[c.body] * c.a, b = poses.oMb[c.body] * c.b;
-    fingertip = std::min(fingertip, sampledDistance(a, b, hand.a, hand.b) - c.radius - hand.radius);
-  }
-  EXPECT_NEAR(fingerClearance(model, poses, &hand, 1), fingertip - 0.002, 3e-3);
-  EXPECT_LT(fingerClearance(model, poses, &hand, 1), 0.0);
-  // 20 cm below the TCP: clear, by the fingertips' distance less the keep, the palm nearer than it never counted
-  hand.a = hand.b = plain.a = plain.b = tcp.translation() - Vector3(0, 0, 0.20);
-  EXPECT_GT(fingerClearance(model, poses, &hand, 1), 0.0);
-  EXPECT_GE(fingerClearance(model, poses, &hand, 1), armClearance(model, poses, &plain, 1) - 0.002 - 1e-12);
-}
-
 // a box by a dense sampling of the segment, each point's distance exact (clamped to the box)
 double sampledBoxDistance(const Vector3& p0, const Vector3& p1, const Vector3& centre, const Matrix3& axes,
                           const Vector3& half) {
