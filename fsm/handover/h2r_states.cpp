@@ -177,7 +177,6 @@ void Approach::configure(const YamlReader& def) {
 
 void Approach::onStart(HandoverContext& ctx) {
   blind_ = false;
-  beside_ = false;
   struck_ = false;
   withdrawal_.restart();
   take_.restart();
@@ -194,7 +193,7 @@ void Approach::onStart(HandoverContext& ctx) {
   funnel_.restart(ctx.time);
 }
 
-void Approach::slideIn(HandoverContext& ctx, bool arrived) {
+bool Approach::slideIn(HandoverContext& ctx, bool arrived) {
   // still brought in: lined up at the full standoff (a stiff slide onto an object that still
   // moves would strike it; at the mouth, a lying tube brought in at 1.3 m/s struck the gripper:
   // g533_00010); arrived: from the mouth (the fingertips just in front of it) in as it fits
@@ -213,14 +212,14 @@ void Approach::slideIn(HandoverContext& ctx, bool arrived) {
   // object or on its edge, not in front of it
   const Vector3 tcp = grasp.inverse() * ctx.in.tcp_pose.translation();
   const double off_line = tcp.head<2>().norm();
-  beside_ = tcp.z() > -mouth && off_line > near_distance_;
+  const bool beside = tcp.z() > -mouth && off_line > near_distance_;
   if (stall_.detouring()) {
     // stalled there (the palm against a tube's side, g881_00174: 12 cm short for 10 s; the finger
     // capsule on a box's edge, g907_00138: 4 cm):
     // line up in front of it again, as far back along the axis as the TCP is off the line, so
     // the way to the line-up point leads away from the object; back on the line, the funnel goes on
     if (off_line <= near_distance_)
-      stall_.endDetour(ctx.time);
+      stall_.restart(ctx.time);  // progress is owed again from here
     else
       goal = std::max(goal, mouth + off_line);
   }
@@ -228,6 +227,7 @@ void Approach::slideIn(HandoverContext& ctx, bool arrived) {
   // in the funnel the gripper and the hand share the object, as in Grasp: the rules that keep
   // the fingers off the object and apart from the hand would stop the slide short of it
   ctrl().relaxHandClearance(standoff < mouth - 1e-6);
+  return beside;
 }
 
 bool Approach::onRun(HandoverContext& ctx) {
@@ -258,8 +258,7 @@ bool Approach::onRun(HandoverContext& ctx) {
   } else if (!blind) {
     // the best reachable target as the person moves (a new grasp starts from the funnel's mouth)
     const bool switched = followPlan(ctx, ctrl(), hand_, standoff_);
-    beside_ = false;  // slideIn tells
-    if (funnel_.enabled() && !switched) slideIn(ctx, arrived);
+    const bool beside = funnel_.enabled() && !switched && slideIn(ctx, arrived);
     if (hand_ && lift_ > 0.0) followDescent(ctx, ctrl(), lift_, lift_speed_, dt);
     // the gains follow the tracked target's speed: a take's target (where the reach ends) stands
     // still once it is known; a give's is the receiver's hand itself
@@ -273,7 +272,7 @@ bool Approach::onRun(HandoverContext& ctx) {
       setPhaseGainsForSpeed(*ctx.params, ctrl(), TrackingGains::kFollow,
                             (hand_ ? body.velocity : ctx.in.target_velocity).head<3>().norm(), !hand_);
     stall_.watch(ctx, ctrl(), hand_, positionError(ctx.in.tcp_pose, ctx.in.target_pose), arrived, plan.valid,
-                 beside_);
+                 beside);
   }
   if (withdrawal_.withdrawn(ctx, hand_)) {
     setOutput(withdrawn_);

@@ -107,8 +107,10 @@ class Approach : public HandoverState {
  private:
   /// A take's funnel: the standoff toward the funnel's, once the object has
   /// `arrived`; after a stall beside the object (StallRecovery::detouring),
-  /// lined up as far back again as the TCP is off the approach line. RT safe.
-  void slideIn(HandoverContext& ctx, bool arrived);
+  /// lined up as far back again as the TCP is off the approach line. True
+  /// when the gripper stands beside the object (past the funnel's mouth, more
+  /// than near_distance off the approach line). RT safe.
+  bool slideIn(HandoverContext& ctx, bool arrived);
 
   bool hand_;
   int near_, withdrawn_, pulled_ = -1;
@@ -124,7 +126,6 @@ class Approach : public HandoverState {
   bool blind_ = false;              ///< holding: the tracked body's data is stale
   double yield_force_ = 0.0;        ///< N on the empty gripper that is a strike (0: off)
   bool struck_ = false;             ///< struck: the follow gains for the rest of the approach
-  bool beside_ = false;             ///< the gripper beside the object it lines up on (slideIn)
   GraspFunnel funnel_;              ///< a take's continuous approach; max_standoff 0: none
 };
 

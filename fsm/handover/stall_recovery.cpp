@@ -15,8 +15,6 @@ void StallRecovery::restart(double time) {
   detour_ = false;
 }
 
-void StallRecovery::endDetour(double time) { restart(time); }
-
 void StallRecovery::watch(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double error, bool at_rest,
                           bool planned, bool beside) {
   if (stall_time_ <= 0.0) return;

@@ -34,12 +34,10 @@ class StallRecovery {
   /// configuration, the pre-target's while backed off) when it stalled at a
   /// joint limit with a plan, the detour when it stalled beside the object.
   void watch(HandoverContext& ctx, ControllerHandle& ctrl, bool hand, double error, bool at_rest, bool planned,
-             bool beside = false);
+             bool beside);
   /// Stalled beside the object: the caller lines up from in front of it
-  /// again, and ends the detour (endDetour) once back on the approach line.
+  /// again, and ends the detour (restart) once back on the approach line.
   bool detouring() const { return detour_; }
-  /// Back on the approach line: progress is owed again from `time` (s).
-  void endDetour(double time);
   /// One joint-space cycle: true once the move is over (at the
   /// configuration, too long, or the target moved or changed): the caller
   /// tracks again.
