@@ -28,7 +28,9 @@ namespace handover::fsm {
 /// is the person back at rest, not an offer: only coming toward the robot is;
 /// with home_rest_time (s, >= settle_time) such a rest is an offer once it
 /// lasted that long (a person who holds the object out where they were
-/// first seen, and waits). Coming is faster than approach_speed by
+/// first seen, and waits), unless the body had been more than twice
+/// home_radius from there (HandoverContext::*_farthest_from_home): gone out
+/// and back, the person is back at rest. Coming is faster than approach_speed by
 /// approach_significance (default 0) standard deviations of the velocity
 /// estimate (SensedBody::speed_std).
 /// With carried_in_distance (m, optional), a body within reach that is still

@@ -151,6 +151,12 @@ void HandoverFsm::sanitise(const HandoverInput& in) {
     ctx_.home_object = ctx_.in.object.pose.translation();
     ctx_.home_object_known = true;
   }
+  if (ctx_.home_hand_known && ctx_.in.hand.valid)
+    ctx_.hand_farthest_from_home =
+        std::max(ctx_.hand_farthest_from_home, (ctx_.in.hand.pose.translation() - ctx_.home_hand).norm());
+  if (ctx_.home_object_known && ctx_.in.object.valid)
+    ctx_.object_farthest_from_home =
+        std::max(ctx_.object_farthest_from_home, (ctx_.in.object.pose.translation() - ctx_.home_object).norm());
   last_time_ = ctx_.in.time;
 }
 

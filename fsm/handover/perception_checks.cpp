@@ -25,6 +25,10 @@ const Vector3* homeOf(const HandoverContext& ctx, bool hand) {
   return ctx.home_object_known ? &ctx.home_object : nullptr;
 }
 
+double farthestFromHome(const HandoverContext& ctx, bool hand) {
+  return hand ? ctx.hand_farthest_from_home : ctx.object_farthest_from_home;
+}
+
 bool headingHome(const HandoverContext& ctx, bool hand) {
   // heading there, not only drifting that way: a person who moves the hand on to where they
   // settle was taken for one who withdraws

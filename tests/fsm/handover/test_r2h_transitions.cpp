@@ -253,6 +253,40 @@ TEST(HandoverR2H, WaitingForThePullHoldsAtThePresentationPoseNotShortOfIt) {
   EXPECT_LT(rotationError(rig.ctl.pose, in.target_pose), 0.01);
 }
 
+// A receiver's hand at rest where it was first seen, within reach, is
+// waited for as anywhere: a receiver who holds it out there is served. Once
+// it had gone out and came back there, that receiver withdrew: served at
+// their hip, the arm stood in DetectPull against their trunk for 6 s
+// (g929_00151, 150 contact steps) or let the object fall as they reached
+// again (g911_00186). Coming toward the robot still starts the approach.
+TEST(HandoverR2H, AReceiverBackAtRestWhereTheyWereFirstSeenIsNotServedThere) {
+  const Vector3 home(0.55, 0.25, 0.25);    // 0.6 m from the shoulder, in the workspace
+  for (const bool went_out : {false, true}) {
+    Rig rig(true);
+    rig.world.hand = rig.world.hand_goal = home;
+    ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+    if (went_out) {
+      // round a circle 15 cm across and back, slower than approach_speed and faster than
+      // settle_speed: no rest on the way (a reversal in place would be one), no coming
+      const Vector3 centre = home + Vector3(0.0, 0.075, 0.0);
+      for (int k = 1; k <= 72; ++k) {
+        const double a = -0.5 * M_PI + k * 2.0 * M_PI / 72.0;
+        const Vector3 at = centre + 0.075 * Vector3(std::cos(a), std::sin(a), 0.0);
+        rig.world.moveHand(at, 0.08);
+        ASSERT_TRUE(rig.runUntil([&] { return (rig.world.hand - at).norm() < 1e-9; }, 1.0));
+        ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "WaitForReceiver")) << k << ": " << rig.fsm->activePath();
+      }
+    }
+    rig.runFor(1.5);
+    EXPECT_EQ(Rig::endsWith(rig.fsm->activePath(), "WaitForReceiver"), went_out)
+        << (went_out ? "back at rest where first seen: no approach" : "held out where first seen: served")
+        << "; " << rig.fsm->activePath();
+    if (!went_out) continue;
+    rig.world.moveHand(kReceive, 0.5);
+    EXPECT_TRUE(rig.runUntilState("/Approach", 3.0)) << rig.fsm->activePath();
+  }
+}
+
 // DetectPull holds still: begun while the receiver's hand still crept on
 // (0.1-0.2 m/s, settling), the held object was pushed along with it by 2 cm
 // before anything counted as a pull. The presentation waits for the hand to
