@@ -70,6 +70,10 @@ void WaitForPerson::configure(const YamlReader& def) {
   if (def.has("carried_in_distance")) carried_in_ = readRange(def, "carried_in_distance", 0.0, 1.0);
   if (def.has("pull_hold_time") && !hand_) def.child("pull_hold_time").fail("only a give's wait (for the receiver) is taken from");
   if (take_.configure(def)) pulled_ = declareOutput("Pulled");
+  if (auto w = def.optionalChild("withdrawn_at_home"); w && w->asBool()) {
+    if (!def.has("home_radius")) w->fail("a person back home needs home_radius");
+    withdrawn_ = declareOutput("Withdrawn");
+  }
 }
 
 void WaitForPerson::onStart(HandoverContext& ctx) {
@@ -94,6 +98,16 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   // that ended withdrawn at once, a retry lost each.)
   const Vector3 pos = (p.anticipate_reach ? restPose(body) : body.pose).translation();
   const Vector3* home = homeOf(ctx, hand_);
+  const bool at_home = home_radius_ > 0.0 && home != nullptr && (pos - *home).norm() < home_radius_;
+  // back where it was first seen after it had been out twice that far: the person withdrew
+  // (reached while the arm still went to its ready pose, and went back), in or out of the workspace
+  const bool back_home = at_home && farthestFromHome(ctx, hand_) > 2.0 * home_radius_;
+  if (withdrawn_ >= 0 && back_home && fresh(body, p.max_data_age)) {
+    ++ctx.stats.aborts;  // as a Retreat counts it: coming back is a retry
+    ctx.retry_pending = ctx.stats.retries < p.max_retries;
+    setOutput(withdrawn_);
+    return true;
+  }
   // the workspace, or its edge where the arm's own kinematics reach the body (the planner's IK):
   // inside the band a person must leave to count as withdrawn (withdraw.workspace_margin), so an
   // approach it starts is not ended at once. A receiver's hand 5 mm past the box's side was never
@@ -112,7 +126,6 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   // sensor's noise as 0.1-0.25 m/s: approaches began 0.04 s into the run, the arm on its way to
   // a person who had not moved yet and then brought the object in across its path)
   bool ready = speedToward(p.workspace.center, body) - significance_ * body.speed_std > approach_speed_;
-  const bool at_home = home_radius_ > 0.0 && home != nullptr && (pos - *home).norm() < home_radius_;
   // resting, on its displacement (rest_window.hpp): a person holding the object still after a
   // dropout was never seen to rest by the noisy speed, and the robot gave up on them
   // within reach: near the shoulder, or where the arm's own kinematics reach it (the planner's IK),
@@ -131,7 +144,6 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   // out where they stand and waiting), with the same tolerance on its displacement; never once
   // the body had gone out and came back: a person back at rest (a receiver who reached while the
   // arm still went to its ready pose and withdrew was served at their hip, g911_00186)
-  const bool back_home = at_home && farthestFromHome(ctx, hand_) > 2.0 * home_radius_;
   const double window = at_home ? home_rest_time_ : settle_time_;
   if (!within_reach || (at_home && (home_rest_time_ <= 0.0 || back_home))) {
     rest_.reset();

@@ -30,7 +30,9 @@ namespace handover::fsm {
 /// lasted that long (a person who holds the object out where they were
 /// first seen, and waits), unless the body had been more than twice
 /// home_radius from there (HandoverContext::*_farthest_from_home): gone out
-/// and back, the person is back at rest. Coming is faster than approach_speed by
+/// and back, the person is back at rest; with withdrawn_at_home: true that is
+/// [Withdrawn] at once (seen, in the workspace or not; counted as an abort,
+/// coming back is a retry). Coming is faster than approach_speed by
 /// approach_significance (default 0) standard deviations of the velocity
 /// estimate (SensedBody::speed_std).
 /// With carried_in_distance (m, optional), a body within reach that is still
@@ -38,7 +40,8 @@ namespace handover::fsm {
 /// robot, and that far from where it was first seen is coming too: brought
 /// in from the side, it crosses the robot's front more than it comes nearer.
 /// Keys: approach_speed, settle_speed (m/s), settle_time (s), home_radius (m),
-/// home_rest_time (s), approach_significance, carried_in_distance (m).
+/// home_rest_time (s), withdrawn_at_home, approach_significance,
+/// carried_in_distance (m).
 class WaitForPerson : public HandoverState {
  public:
   explicit WaitForPerson(bool hand);
@@ -51,7 +54,7 @@ class WaitForPerson : public HandoverState {
   static void cameBack(HandoverContext& ctx);
 
   bool hand_;
-  int out_, pulled_ = -1;
+  int out_, pulled_ = -1, withdrawn_ = -1;
   ReceiverTake take_;  ///< a give: a receiver who takes the object the robot waits with
   double approach_speed_ = 0.1, settle_speed_ = 0.05, settle_time_ = 0.3;
   double home_radius_ = 0.0;  ///< m, 0: a rest anywhere within reach counts

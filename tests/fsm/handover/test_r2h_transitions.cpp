@@ -255,35 +255,48 @@ TEST(HandoverR2H, WaitingForThePullHoldsAtThePresentationPoseNotShortOfIt) {
 
 // A receiver's hand at rest where it was first seen, within reach, is
 // waited for as anywhere: a receiver who holds it out there is served. Once
-// it had gone out and came back there, that receiver withdrew: served at
-// their hip, the arm stood in DetectPull against their trunk for 6 s
-// (g929_00151, 150 contact steps) or let the object fall as they reached
-// again (g911_00186). Coming toward the robot still starts the approach.
-TEST(HandoverR2H, AReceiverBackAtRestWhereTheyWereFirstSeenIsNotServedThere) {
-  const Vector3 home(0.55, 0.25, 0.25);    // 0.6 m from the shoulder, in the workspace
-  for (const bool went_out : {false, true}) {
+// it had gone out and came back there, that receiver withdrew before the arm
+// came: served at their hip, the arm stood in DetectPull against their trunk
+// for 6 s (g929_00151, 150 contact steps) or let the object fall as they
+// reached again (g911_00186). Now that is WaitAgain at once (an abort): a
+// receiver who comes again is served (a retry), one who stays home has left
+// and the give ends aborted within WaitAgain's timeout, not the first wait's.
+TEST(HandoverR2H, AReceiverBackAtRestWhereTheyWereFirstSeenWithdrew) {
+  const Vector3 home(0.55, 0.25, 0.25);  // 0.6 m from the shoulder, in the workspace
+  for (const int run : {0, 1, 2}) {      // 0: held out at home; 1: out and back, then comes; 2: stays home
     Rig rig(true);
     rig.world.hand = rig.world.hand_goal = home;
     ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
-    if (went_out) {
-      // round a circle 15 cm across and back, slower than approach_speed and faster than
-      // settle_speed: no rest on the way (a reversal in place would be one), no coming
-      const Vector3 centre = home + Vector3(0.0, 0.075, 0.0);
-      for (int k = 1; k <= 72; ++k) {
-        const double a = -0.5 * M_PI + k * 2.0 * M_PI / 72.0;
-        const Vector3 at = centre + 0.075 * Vector3(std::cos(a), std::sin(a), 0.0);
-        rig.world.moveHand(at, 0.08);
-        ASSERT_TRUE(rig.runUntil([&] { return (rig.world.hand - at).norm() < 1e-9; }, 1.0));
-        ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "WaitForReceiver")) << k << ": " << rig.fsm->activePath();
-      }
+    if (run == 0) {
+      rig.runFor(1.0);
+      const Leaves seen = rig.leaves();
+      EXPECT_NE(std::find(seen.begin(), seen.end(), "Approach"), seen.end()) << "held out where first seen: served";
+      EXPECT_EQ(std::find(seen.begin(), seen.end(), "WaitAgain"), seen.end());
+      continue;
     }
-    rig.runFor(1.5);
-    EXPECT_EQ(Rig::endsWith(rig.fsm->activePath(), "WaitForReceiver"), went_out)
-        << (went_out ? "back at rest where first seen: no approach" : "held out where first seen: served")
-        << "; " << rig.fsm->activePath();
-    if (!went_out) continue;
-    rig.world.moveHand(kReceive, 0.5);
-    EXPECT_TRUE(rig.runUntilState("/Approach", 3.0)) << rig.fsm->activePath();
+    // round a circle 15 cm across and back, slower than approach_speed and faster than
+    // settle_speed: no rest on the way (a reversal in place would be one), no coming
+    const Vector3 centre = home + Vector3(0.0, 0.075, 0.0);
+    for (int k = 1; k <= 72 && Rig::endsWith(rig.fsm->activePath(), "WaitForReceiver"); ++k) {
+      const double a = -0.5 * M_PI + k * 2.0 * M_PI / 72.0;
+      const Vector3 at = centre + 0.075 * Vector3(std::cos(a), std::sin(a), 0.0);
+      rig.world.moveHand(at, 0.08);
+      rig.runUntil([&] { return (rig.world.hand - at).norm() < 1e-9 || !Rig::endsWith(rig.fsm->activePath(), "WaitForReceiver"); }, 1.0);
+    }
+    ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "WaitAgain")) << "back where first seen: withdrawn; " << rig.fsm->activePath();
+    EXPECT_LT((rig.world.hand - home).norm(), 0.05 + 0.01) << "withdrawn only once back within home_radius";
+    EXPECT_GT((rig.world.hand - home).norm(), 0.04) << "withdrawn as it came within home_radius";
+    EXPECT_EQ(rig.fsm->stats().aborts, 1);
+    if (run == 1) {
+      rig.world.moveHand(kReceive, 0.5);
+      EXPECT_TRUE(rig.runUntilState("/Approach", 3.0)) << rig.fsm->activePath();
+      EXPECT_EQ(rig.fsm->stats().retries, 1);
+      continue;
+    }
+    const double back = rig.world.time;
+    ASSERT_TRUE(rig.runUntil([&] { return rig.fsm->done(); }, 20.0)) << rig.fsm->activePath();
+    EXPECT_STREQ(rig.fsm->stats().outcome, "aborted");
+    EXPECT_LT(rig.world.time - back, 5.0) << "a receiver who stays home has left";
   }
 }
 
