@@ -81,8 +81,10 @@ struct HandoverContext : Context {
   /// gives up (set once, by HandoverFsm::step, from the first valid sample).
   Vector3 home_hand = Vector3::Zero(), home_object = Vector3::Zero();
   bool home_hand_known = false, home_object_known = false;
-  /// The farthest (m) each has been seen from its home since (HandoverFsm::step):
-  /// back home after it went out is a person back at rest, not one who waits there
+  /// Each one's distance (m) from its home, low-passed by params.away_time_constant, and the
+  /// farthest that has been since (HandoverFsm::step): back home after it went out is a person
+  /// back at rest, not one who waits there
+  double hand_from_home = 0.0, object_from_home = 0.0;
   double hand_farthest_from_home = 0.0, object_farthest_from_home = 0.0;
   /// The object changed hands (a take's release, a give's object confirmed
   /// gone): all that is left is to stow; a restart after a safety stop must

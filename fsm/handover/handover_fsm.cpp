@@ -151,12 +151,18 @@ void HandoverFsm::sanitise(const HandoverInput& in) {
     ctx_.home_object = ctx_.in.object.pose.translation();
     ctx_.home_object_known = true;
   }
+  // how far each went from home, low-passed: an estimate's transient is no excursion
+  const double dt = std::max(0.0, ctx_.in.time - last_time_);
+  const double tau = params_.away_time_constant;
+  const auto away = [&](const SensedBody& body, const Vector3& home, double& from, double& farthest) {
+    const double d = (body.pose.translation() - home).norm();
+    from += (tau > 0.0 ? dt / (tau + dt) : 1.0) * (d - from);
+    farthest = std::max(farthest, from);
+  };
   if (ctx_.home_hand_known && ctx_.in.hand.valid)
-    ctx_.hand_farthest_from_home =
-        std::max(ctx_.hand_farthest_from_home, (ctx_.in.hand.pose.translation() - ctx_.home_hand).norm());
+    away(ctx_.in.hand, ctx_.home_hand, ctx_.hand_from_home, ctx_.hand_farthest_from_home);
   if (ctx_.home_object_known && ctx_.in.object.valid)
-    ctx_.object_farthest_from_home =
-        std::max(ctx_.object_farthest_from_home, (ctx_.in.object.pose.translation() - ctx_.home_object).norm());
+    away(ctx_.in.object, ctx_.home_object, ctx_.object_from_home, ctx_.object_farthest_from_home);
   last_time_ = ctx_.in.time;
 }
 

@@ -133,6 +133,7 @@ HandoverParams loadHandoverParams(const YamlReader& n) {
   if (auto d = w.optionalChild("distance")) p.withdraw_distance = d->checkRange(d->asDouble(), 0.0, 1.0);
   if (auto m = w.optionalChild("workspace_margin")) p.withdraw_workspace_margin = m->checkRange(m->asDouble(), 0.0, 0.5);
   if (auto r = w.optionalChild("home_radius")) p.withdraw_home_radius = r->checkRange(r->asDouble(), 0.0, 0.5);
+  if (auto a = w.optionalChild("away_time_constant")) p.away_time_constant = a->checkRange(a->asDouble(), 0.0, 2.0);
   if (auto f = w.optionalChild("take_back_force")) p.take_back_force = f->checkRange(f->asDouble(), 0.0, 200.0);
   w.finish();
   const YamlReader poses = n.child("poses");

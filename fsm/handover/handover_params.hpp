@@ -124,6 +124,9 @@ struct HandoverParams {
   /// m: the body back within this of where it was first seen (the person's rest place), having
   /// been twice this from it since the watch restarted, is withdrawn however slowly it went (0: off)
   double withdraw_home_radius = 0.0;
+  /// s: how far the body has gone from where it was first seen counts low-passed by this
+  /// (HandoverContext::*_farthest_from_home; 0: as estimated)
+  double away_time_constant = 0.0;
   /// N: a pull beyond the object's weight toward where the person's hand came from, while
   /// the fingers close on or hold the object they still carry = they take it back (0: never)
   double take_back_force = 0.0;

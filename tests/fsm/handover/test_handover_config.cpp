@@ -95,6 +95,7 @@ TEST(HandoverConfig, BadParameterValues) {
   expectRefused("pose: stow", "pose: home", "'home' is not one of: stow | safe | ready");
   expectRefused("close_width: 0.0", "close_width: 0.09", "params.gripper.close_width");
   expectRefused("home_radius: 0.025", "home_radius: 0.9", "params.withdraw.home_radius");
+  expectRefused("away_time_constant: 0.1", "away_time_constant: 5.0", "params.withdraw.away_time_constant");
   // a first wait's Withdrawn is the body back home: without home_radius there is no home to be back at,
   // and without the flag the state has no such output to map
   expectRefused("home_radius: 0.05, home_rest_time: 0.3, withdrawn_at_home: true", "withdrawn_at_home: true",
