@@ -12,7 +12,8 @@ namespace handover::fsm {
 /// it has not been seen.
 const Vector3* homeOf(const HandoverContext& ctx, bool hand);
 /// The farthest (m) the receiver's hand (`hand`) or the offered object has
-/// been seen from its home (HandoverContext::*_farthest_from_home).
+/// gone from its home, its distance low-passed by params.away_time_constant
+/// (HandoverContext::*_farthest_from_home).
 double farthestFromHome(const HandoverContext& ctx, bool hand);
 /// Speed of `body` toward `center` (m/s, > 0 when approaching).
 double speedToward(const Vector3& center, const SensedBody& body);
