@@ -141,11 +141,10 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
       speedToward(p.workspace.center, body) >= 0.0)
     ready = true;
   // at home a rest is an offer only once it lasted home_rest_time (a person holding the object
-  // out where they stand and waiting), with the same tolerance on its displacement; never once
-  // the body had gone out and came back: a person back at rest (a receiver who reached while the
-  // arm still went to its ready pose and withdrew was served at their hip, g911_00186)
+  // out where they stand and waiting), with the same tolerance on its displacement (back home
+  // after going out, withdrawn_at_home has ended the wait above)
   const double window = at_home ? home_rest_time_ : settle_time_;
-  if (!within_reach || (at_home && (home_rest_time_ <= 0.0 || back_home))) {
+  if (!within_reach || (at_home && home_rest_time_ <= 0.0)) {
     rest_.reset();
   } else {
     ready = rest_.rests(pos, ctx.time, window > 0.0 ? settle_speed_ * settle_time_ / window : settle_speed_, window) ||

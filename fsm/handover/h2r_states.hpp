@@ -28,11 +28,11 @@ namespace handover::fsm {
 /// is the person back at rest, not an offer: only coming toward the robot is;
 /// with home_rest_time (s, >= settle_time) such a rest is an offer once it
 /// lasted that long (a person who holds the object out where they were
-/// first seen, and waits), unless the body had been more than twice
-/// home_radius from there (HandoverContext::*_farthest_from_home): gone out
-/// and back, the person is back at rest; with withdrawn_at_home: true that is
-/// [Withdrawn] at once (seen, in the workspace or not; counted as an abort,
-/// coming back is a retry). Coming is faster than approach_speed by
+/// first seen, and waits). With withdrawn_at_home: true, the body seen back
+/// within home_radius of there after it had been more than twice that from
+/// it (HandoverContext::*_farthest_from_home) is the person back at rest:
+/// [Withdrawn] at once, in the workspace or not (counted as an abort, coming
+/// back is a retry). Coming is faster than approach_speed by
 /// approach_significance (default 0) standard deviations of the velocity
 /// estimate (SensedBody::speed_std).
 /// With carried_in_distance (m, optional), a body within reach that is still
