@@ -12,8 +12,8 @@
 // with its velocity fed forward so that the arm does not lag D v / K behind;
 // and only as far as the object must go to be clear of the finger pads (its
 // bounding radius plus a pad's half span): beyond that the gripper has
-// nothing left to make way for. The object's estimate when it is seen, else
-// the hand that holds it.
+// nothing left to make way for. The object's estimate when it is seen and not the
+// robot's own (a payload set), else the hand that holds it.
 //
 // The opening itself makes way for the receiver's hand: a parallel gripper
 // opens symmetrically about the TCP, so with the closing axis pointing at the
@@ -42,7 +42,7 @@ class ReleaseRide {
   void start(const HandoverContext& ctx) {
     const HandoverInput& in = ctx.in;
     axis_ = in.tcp_pose.linear().col(2);
-    body_ = ctx.params->release_ride ? leaving(in) : Body::kNone;
+    body_ = ctx.params->release_ride ? leaving(in, ctx.ledger != nullptr && ctx.ledger->payloadSet()) : Body::kNone;
     if (body_ != Body::kNone) origin_ = pose(in).translation();
     clear_ = io::boundingRadius(ctx.object.shape) + ctx.params->finger_half_span;
     into_ = 0.0;
@@ -120,8 +120,12 @@ class ReleaseRide {
 
  private:
   enum class Body { kNone, kObject, kHand };
-  static Body leaving(const HandoverInput& in) {
-    if (in.object.valid) return Body::kObject;
+  // While the robot carries the object's weight (a payload set: Release, ConfirmGone) its
+  // estimate is where the gripper holds it, not where the receiver takes it: following that
+  // followed the gripper itself, and a receiver lifting a box out of a side grip raised their
+  // hand into fingers that never made way (outsider e_41). The hand that takes it then.
+  static Body leaving(const HandoverInput& in, bool robot_carries) {
+    if (in.object.valid && !robot_carries) return Body::kObject;
     if (in.hand.valid) return Body::kHand;
     return Body::kNone;
   }

@@ -178,6 +178,9 @@ struct World {
   double joint_limit_margin = 1e9;  // rad, the arm's nearest joint to its position limit
   double share = -1.0;      // >= 0: the load share the estimator reports while the fingers hold (a weight coming over)
   Vector6 tool_contact = Vector6::Zero();  // what touches the gripper: [force; torque about the TCP], world
+  bool payload_seen = false;      // the controller carried a payload at the last step
+  bool released_in_hand = false;  // the payload was cleared since: perception keeps the object in the hand
+  Vector3 object_left_in_hand = Vector3::Zero();  // where the fingers left it, from the hand
   TrackingPlan object_plan;  // what a grasp planner would report (invalid: none)
   TrackingPlan hand_plan;
 
@@ -214,6 +217,12 @@ struct World {
 
   void advance(const RecordingController& c) {
     time += kDt;
+    if (payload_seen && !c.payload) {
+      released_in_hand = true;
+      object_left_in_hand = tcp.translation() - hand;
+    }
+    if (c.payload) released_in_hand = false;
+    payload_seen = c.payload;
     // the person's hand: straight line at constant speed
     const Vector3 dh = hand_goal - hand;
     const double step = std::min(dh.norm(), hand_speed * kDt);
@@ -275,8 +284,13 @@ struct World {
     in.hand.speed_std = in.object.speed_std = speed_std;
     in.hand.valid = !dropout;
     in.hand.age = age;
+    // as the runtime's estimator: while the robot carries a payload the object is where the
+    // gripper holds it (ObjectHolder::Robot), whoever else holds it too; let go, it stays in
+    // the person's hand where the fingers left it (HandoverCycle::step)
     in.object.pose = objectPose();
-    in.object.velocity.head<3>() = person_holds ? Vector3(hand_vel + jitter) : tcp_vel;
+    if (c.payload) in.object.pose.translation() = tcp.translation();
+    else if (released_in_hand) in.object.pose.translation() = hand + object_left_in_hand;
+    in.object.velocity.head<3>() = person_holds && !c.payload ? Vector3(hand_vel + jitter) : tcp_vel;
     in.object.valid = !dropout;
     in.object.age = age;
     if (knows_rest) {  // a perfect reach prediction: where the hand's move ends

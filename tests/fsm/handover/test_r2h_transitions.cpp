@@ -91,7 +91,10 @@ TEST(HandoverR2H, FingersBackOutAlongTheApproachAxisBeforeTurningAway) {
 // far as the object must go to be clear of the finger pads (a ball of radius
 // 3 cm: 3 cm + a pad's half span, 1.2 cm). Before, the set-point held its
 // place, and a box taken at 0.4 m/s partly along that axis struck a finger
-// and spun the wrist past its velocity limit (g421_00186).
+// and spun the wrist past its velocity limit (g421_00186). Until the payload
+// is cleared the object's estimate is where the gripper holds it (the fake
+// world's, as the runtime's): the ride follows the hand that takes it, and
+// following that estimate had followed the gripper itself, never the object.
 TEST(HandoverR2H, TheOpeningGripperRidesAlongWithTheObjectBeingTaken) {
   io::ObjectShape ball;
   ball.kind = io::ObjectShape::Kind::kSphere;
