@@ -173,5 +173,60 @@ TEST(ReleaseRide, AnObjectPushedIntoTheGripperIsFollowedBackAndOneLeavingThrough
   EXPECT_NEAR(velocity.z(), 0.0, 1e-12);
 }
 
+// The hand that takes the object (the leaving body while the robot still
+// carries the payload): the gripper follows it along the closing axis (the
+// object it holds would strike a pad) and along the fingers' faces only where
+// it comes at them. A box held from the side (approach x, closing y, faces
+// z), the receiver's hand 7 cm below the TCP: lifted, it is followed up (it
+// rose into the fingers above it, outsider e_41); the same hand pulled along
+// x, through the fingertips' way, or away along the faces is not chased (at
+// 0.8 m/s the arm ran past its speed limits after it, outsider r_29).
+TEST(ReleaseRide, TheHandThatTakesTheObjectIsFollowedOnlyWhereItComesAtTheGripper) {
+  HandoverParams params;
+  params.release_ride = true;
+  HandoverContext ctx;
+  ctx.params = &params;
+  ctx.object.shape.kind = io::ObjectShape::Kind::kBox;
+  ctx.object.shape.size = Vector3(0.065, 0.04, 0.105);
+  ctx.in.finger_width = 0.04;
+  ctx.in.tcp_pose.linear().col(0) = Vector3(0.0, 0.0, 1.0);  // the faces' direction: up
+  ctx.in.tcp_pose.linear().col(1) = Vector3(0.0, 1.0, 0.0);  // closing axis
+  ctx.in.tcp_pose.linear().col(2) = ctx.in.tcp_pose.linear().col(0).cross(ctx.in.tcp_pose.linear().col(1));
+  ctx.in.object.valid = false;  // the robot's own estimate while it carries it: not the leaving body
+  ctx.in.hand.valid = true;
+  const Vector3 hand0(0.0, 0.0, -0.07);
+  const double clear = io::boundingRadius(ctx.object.shape) + params.finger_half_span;
+  auto followed = [&](const Vector3& moved, const Vector3& v, Vector3& velocity) {
+    ctx.in.hand.pose.translation() = hand0;
+    ReleaseRide ride;
+    ride.start(ctx);
+    ctx.in.hand.pose.translation() = hand0 + moved;
+    ctx.in.hand.velocity.head<3>() = v;
+    Vector3 offset;
+    ride.follow(ctx.in, offset, velocity);
+    return offset;
+  };
+  Vector3 velocity;
+  // lifted 3 cm at 0.3 m/s: up toward the fingers, followed all the way, its rate fed forward
+  Vector3 offset = followed(Vector3(0.0, 0.0, 0.03), Vector3(0.0, 0.0, 0.3), velocity);
+  EXPECT_NEAR(offset.z(), 0.03, 1e-12);
+  EXPECT_NEAR(velocity.z(), 0.3, 1e-12);
+  // lowered (away from the fingers along their faces): not chased
+  offset = followed(Vector3(0.0, 0.0, -0.03), Vector3(0.0, 0.0, -0.3), velocity);
+  EXPECT_LT(offset.norm(), 1e-12);
+  EXPECT_LT(velocity.norm(), 1e-12);
+  // along the closing axis: followed (the object it holds would strike a pad), as far as clear
+  offset = followed(Vector3(0.0, 0.02, 0.0), Vector3(0.0, 0.4, 0.0), velocity);
+  EXPECT_NEAR(offset.y(), 0.02, 1e-12);
+  EXPECT_NEAR(velocity.y(), 0.4, 1e-12);
+  offset = followed(Vector3(0.0, 0.3, 0.0), Vector3(0.0, 0.4, 0.0), velocity);
+  EXPECT_NEAR(offset.y(), clear, 1e-12);
+  // the hand beside the gripper along the closing axis, moving along the faces: the faces
+  // do not point at it (cosine 0), nothing is chased
+  ctx.in.tcp_pose.translation() = Vector3(0.0, -0.07, -0.07);  // the hand 7 cm off along the closing axis
+  offset = followed(Vector3(0.0, 0.0, 0.03), Vector3(0.0, 0.0, 0.3), velocity);
+  EXPECT_LT(offset.norm(), 1e-12);
+}
+
 }  // namespace release_ride_test
 }  // namespace handover::fsm
