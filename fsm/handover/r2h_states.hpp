@@ -48,9 +48,13 @@ class HoldReady : public HandoverState {
 };
 
 /// [Presented, Withdrawn] Tracks the presentation frame (still relative to
-/// the hand) until position, orientation and relative speed errors stay within
-/// tolerance, and the receiver's hand within speed_tolerance * settle_time
-/// of where it was, for settle_time. Keys: position_tolerance (m),
+/// the hand) until position and orientation errors stay within tolerance and,
+/// over settle_time, the TCP keeps its place against the target and the
+/// receiver's hand rests, each within speed_tolerance * settle_time of where
+/// it was (displacements, not speeds: under a 30 Hz, 1 cm tracker the target,
+/// and the arm following it, jittered at 0.1-0.3 m/s around a hand at rest;
+/// never presented, and the receiver never took an object that would not keep
+/// still: outsider e_46). Keys: position_tolerance (m),
 /// orientation_tolerance_deg, speed_tolerance (m/s), settle_time (s);
 /// lift_speed (m/s, optional): the approach's descent onto the palm ends,
 /// its shift going to zero at that speed (presentation_descent.hpp); the
@@ -68,7 +72,8 @@ class Present : public HandoverState {
   double pull_threshold_ = 0.0, pull_hold_ = 0.05;  ///< N (0 = off), s
   double lift_speed_ = 0.4;                         ///< m/s (presentation_descent.hpp)
   double pull_since_ = -1.0, last_time_ = 0.0;
-  RestWindow rest_;  ///< the receiver's hand at rest (settle window)
+  RestWindow rest_;   ///< the receiver's hand at rest (settle window)
+  RestWindow keeps_;  ///< the TCP keeping its place against the target (settle window)
   WithdrawalWatch withdrawal_;  ///< the receiver leaves: Withdrawn
 };
 

@@ -171,6 +171,8 @@ struct World {
   double velocity_noise = 0.0;  // m/s: the perceived velocity of the person's hand and what it holds jitters by
                                 // this much, turning each ms (a filter's estimate from a noisy sensor)
   double speed_std = 0.0;       // m/s: what perception reports as that estimate's standard deviation
+  double position_noise = 0.0;  // m: the perceived position of the person's hand wanders by this much, a
+                                // new direction every 1/30 s (a 30 Hz tracker's filtered samples)
   bool knows_rest = false;  // perception predicts where the hand's move ends (its goal)
   double last_sample = 0.0;
   bool hand_open = true;
@@ -278,6 +280,8 @@ struct World {
           Vector3(0, 0, robot_carries ? 0.0 : mass * 9.81) + (person_holds ? pull : Vector3::Zero()) + brush;
     const double age = time - last_sample;
     in.hand.pose = handPose();
+    const double sample_turn = 2.4 * std::floor(time * 30.0);  // rad: a new direction every sample
+    in.hand.pose.translation() += position_noise * Vector3(std::cos(sample_turn), 0.0, std::sin(sample_turn));
     const double turn = 2.0 * time * 1000.0;  // rad: a new direction every ms
     const Vector3 jitter = velocity_noise * Vector3(std::cos(turn), std::sin(turn), 0.0);
     in.hand.velocity.head<3>() = hand_vel + jitter;
@@ -311,7 +315,7 @@ struct World {
     in.observed_pose = c.observation == ObservationTarget::kHand ? handPose() : objectPose();
     in.target_pose = desired(c);
     in.target_velocity.head<3>() =
-        c.observation == ObservationTarget::kHand ? hand_vel : in.object.velocity.head<3>().eval();
+        c.observation == ObservationTarget::kHand ? Vector3(hand_vel + jitter) : in.object.velocity.head<3>().eval();
     in.holds_object = robot_carries;
     in.object_plan = object_plan;
     in.hand_plan = hand_plan;
