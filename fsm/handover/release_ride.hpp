@@ -30,6 +30,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 
 #include "fsm/handover/controller_handle.hpp"
 #include "fsm/handover/handover_context.hpp"
