@@ -46,6 +46,9 @@ bool finite(const Isometry& T) { return T.matrix().allFinite(); }
 bool finite(const SensedBody& b) {
   return finite(b.pose) && b.velocity.allFinite() && std::isfinite(b.age) && std::isfinite(b.stamp);
 }
+// share of the step `dt` (s) a first-order low-pass of time constant `tau` (s) moves toward its
+// input (1: no filter)
+double lowPassGain(double dt, double tau) { return tau > 0.0 ? dt / (tau + dt) : 1.0; }
 }  // namespace
 
 HandoverFsm::HandoverFsm(const YamlReader& root, ControllerInterface& controller, const ObjectInfo& object)
@@ -135,7 +138,7 @@ void HandoverFsm::sanitise(const HandoverInput& in) {
       ctx_.force = f;
       ctx_.force_valid = true;
     } else {
-      ctx_.force += (dt / (tau + dt)) * (f - ctx_.force);
+      ctx_.force += lowPassGain(dt, tau) * (f - ctx_.force);
     }
     ctx_.interaction = in.interaction_force;
   } else {
@@ -156,7 +159,7 @@ void HandoverFsm::sanitise(const HandoverInput& in) {
   const double tau = params_.away_time_constant;
   const auto away = [&](const SensedBody& body, const Vector3& home, double& from, double& farthest) {
     const double d = (body.pose.translation() - home).norm();
-    from += (tau > 0.0 ? dt / (tau + dt) : 1.0) * (d - from);
+    from += lowPassGain(dt, tau) * (d - from);
     farthest = std::max(farthest, from);
   };
   if (ctx_.home_hand_known && ctx_.in.hand.valid)

@@ -49,24 +49,23 @@ class ReleaseRide {
     if (body_ != Body::kNone) origin_ = pose(in).translation();
     closing_ = in.tcp_pose.linear().col(1);
     faces_ = in.tcp_pose.linear().col(0);
-    faces_toward_ = 0.0;
-    if (body_ == Body::kHand) {
-      const Vector3 to_tcp = in.tcp_pose.translation() - in.hand.pose.translation();
-      const double n = to_tcp.norm();
-      if (n > 1e-9) faces_toward_ = faces_.dot(to_tcp) / n;
-    }
     clear_ = io::boundingRadius(ctx.object.shape) + ctx.params->finger_half_span;
     into_ = 0.0;
     width_ = in.finger_width;
     last_width_ = in.finger_width;
     last_time_ = in.time;
     opening_rate_ = 0.0;
+    // how much the closing axis and the fingers' faces point at the hand (cosines to the
+    // hand-to-TCP line): the opening's shift, and what of the hand's motion comes at the gripper
     away_.setZero();
+    faces_toward_ = 0.0;
     if (ctx.params->release_ride && in.hand.valid) {
-      const Vector3 closing = in.tcp_pose.linear().col(1);
       const Vector3 from_hand = in.tcp_pose.translation() - in.hand.pose.translation();
       const double n = from_hand.norm();
-      if (n > 1e-9) away_ = closing * (closing.dot(from_hand) / n);
+      if (n > 1e-9) {
+        away_ = closing_ * (closing_.dot(from_hand) / n);
+        if (body_ == Body::kHand) faces_toward_ = faces_.dot(from_hand) / n;
+      }
     }
   }
 

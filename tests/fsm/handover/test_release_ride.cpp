@@ -128,20 +128,32 @@ TEST(ReleaseRide, ClosingFingersAndAnUnseenHandMoveNothingAndTheRideCanBeSwitche
   }
 }
 
+/// A box of `size` held at `width`, the ride on and the receiver's hand seen
+/// (the TCP at the origin unless the test turns it).
+struct HeldBox {
+  HandoverParams params;
+  HandoverContext ctx;
+  HeldBox(const Vector3& size, double width) {
+    params.release_ride = true;
+    ctx.params = &params;
+    ctx.object.shape.kind = io::ObjectShape::Kind::kBox;
+    ctx.object.shape.size = size;
+    ctx.in.finger_width = width;
+    ctx.in.hand.valid = true;
+  }
+  HeldBox(const HeldBox&) = delete;
+  /// m: how far the object goes before it is clear of the pads
+  double clear() const { return io::boundingRadius(ctx.object.shape) + params.finger_half_span; }
+};
+
 TEST(ReleaseRide, AnObjectPushedIntoTheGripperIsFollowedBackAndOneLeavingThroughTheFingertipsIsNot) {
   // approach axis z: the object leaves through the fingertips toward +z
-  HandoverParams params;
-  params.release_ride = true;
-  HandoverContext ctx;
-  ctx.params = &params;
-  ctx.object.shape.kind = io::ObjectShape::Kind::kBox;
-  ctx.object.shape.size = Vector3(0.07, 0.03, 0.012);
-  ctx.in.finger_width = 0.03;
-  ctx.in.hand.valid = true;
+  HeldBox box(Vector3(0.07, 0.03, 0.012), 0.03);
+  HandoverContext& ctx = box.ctx;
   ctx.in.hand.pose.translation() = Vector3(0.0, 0.0, 0.05);  // along the approach: no opening shift
   ctx.in.object.valid = true;
   const Vector3 start(0.0, 0.0, 0.01);
-  const double clear = io::boundingRadius(ctx.object.shape) + params.finger_half_span;
+  const double clear = box.clear();
   Vector3 offset, velocity;
   {
     // leaving through the fingertips: the gripper holds along the approach
@@ -182,20 +194,14 @@ TEST(ReleaseRide, AnObjectPushedIntoTheGripperIsFollowedBackAndOneLeavingThrough
 // x, through the fingertips' way, or away along the faces is not chased (at
 // 0.8 m/s the arm ran past its speed limits after it, outsider r_29).
 TEST(ReleaseRide, TheHandThatTakesTheObjectIsFollowedOnlyWhereItComesAtTheGripper) {
-  HandoverParams params;
-  params.release_ride = true;
-  HandoverContext ctx;
-  ctx.params = &params;
-  ctx.object.shape.kind = io::ObjectShape::Kind::kBox;
-  ctx.object.shape.size = Vector3(0.065, 0.04, 0.105);
-  ctx.in.finger_width = 0.04;
+  HeldBox box(Vector3(0.065, 0.04, 0.105), 0.04);
+  HandoverContext& ctx = box.ctx;
   ctx.in.tcp_pose.linear().col(0) = Vector3(0.0, 0.0, 1.0);  // the faces' direction: up
   ctx.in.tcp_pose.linear().col(1) = Vector3(0.0, 1.0, 0.0);  // closing axis
   ctx.in.tcp_pose.linear().col(2) = ctx.in.tcp_pose.linear().col(0).cross(ctx.in.tcp_pose.linear().col(1));
   ctx.in.object.valid = false;  // the robot's own estimate while it carries it: not the leaving body
-  ctx.in.hand.valid = true;
   const Vector3 hand0(0.0, 0.0, -0.07);
-  const double clear = io::boundingRadius(ctx.object.shape) + params.finger_half_span;
+  const double clear = box.clear();
   auto followed = [&](const Vector3& moved, const Vector3& v, Vector3& velocity) {
     ctx.in.hand.pose.translation() = hand0;
     ReleaseRide ride;
