@@ -151,6 +151,7 @@ void DetectPull::configure(const YamlReader& def) {
   hold_time_ = readRange(def, "hold_time", 0.0, 5.0);
   if (def.has("moved_time")) {
     moved_time_ = readPositive(def, "moved_time", 10.0);
+    if (def.has("rest_speed")) rest_speed_ = readPositive(def, "rest_speed", 1.0);
     moved_ = declareOutput("Moved");
   }
 }
@@ -161,6 +162,7 @@ void DetectPull::onStart(HandoverContext& ctx) {
   ctx.force_holding = ctx.force;  // removes the object's (and hand's) weight from the test
   ctx.interaction_holding = ctx.interaction;  // and a hand resting on it
   moved_since_ = -1.0;
+  hand_rest_.reset();
   hand_seen_at_start_ = fresh(ctx.in.hand, ctx.params->max_data_age);
   hand_at_start_ = ctx.in.hand.pose.translation();
   ctrl().enableTracking(false);
@@ -192,7 +194,10 @@ bool DetectPull::handMoved(HandoverContext& ctx) {
     hand_seen_at_start_ = true;
     hand_at_start_ = ctx.in.hand.pose.translation();
   }
-  const bool away = seen && (ctx.in.hand.pose.translation() - hand_at_start_).norm() > kMoved && !receiverMayHoldIt(ctx);
+  const Vector3 hand = ctx.in.hand.pose.translation();
+  // at rest again somewhere new: near the object or not, a hand that would hold it had pulled
+  const bool rests = seen && hand_rest_.rests(hand, ctx.time, rest_speed_, moved_time_);
+  const bool away = seen && (hand - hand_at_start_).norm() > kMoved && (!receiverMayHoldIt(ctx) || rests);
   if (!away) {
     moved_since_ = -1.0;
     return false;

@@ -81,12 +81,17 @@ class Present : public HandoverState {
 /// hand weight included); pulled when the filtered force differs from it by
 /// more than pull_threshold for hold_time. Set a `timeout` for "no pull".
 /// With `moved_time` (s), [Moved]: the receiver's hand, seen, has gone more
-/// than 5 cm from where it was when the wait began and the object is not in
-/// its grip (receiverMayHoldIt) for that long: they put their hand elsewhere
-/// to take it, and the object is presented there again (a receiver who
-/// moved their hand 9 cm waited 10 s for an object held still where their
-/// hand had been, and gave up: g421_00463).
-/// Keys: pull_threshold (N), hold_time (s), moved_time (s, optional).
+/// than 5 cm from where it was when the wait began, and for that long either
+/// the object is not in its grip (receiverMayHoldIt) or the hand rests again
+/// (rest_speed x moved_time over a moved_time window) without pulling: they
+/// put their hand elsewhere to take it, and the object is presented there
+/// again (a receiver who moved their hand 9 cm waited 10 s for an object held
+/// still where their hand had been, and gave up: g421_00463; one whose hand
+/// came on 6 cm past the presentation and stopped beside the gripper, near
+/// the ball but not at it, waited 6 s, and the gripper drifted into it:
+/// g929_00162). A hand that grips and pulls pulls within the window.
+/// Keys: pull_threshold (N), hold_time (s), moved_time (s, optional),
+/// rest_speed (m/s, with moved_time, default 0.05).
 class DetectPull : public HandoverState {
  public:
   DetectPull();
@@ -98,9 +103,10 @@ class DetectPull : public HandoverState {
   bool handMoved(HandoverContext& ctx);
 
   int pulled_, moved_ = -1;
-  double threshold_ = 3.0, hold_time_ = 0.05, moved_time_ = 0.0;
+  double threshold_ = 3.0, hold_time_ = 0.05, moved_time_ = 0.0, rest_speed_ = 0.05;
   double since_ = -1.0, moved_since_ = -1.0;
   Vector3 hand_at_start_ = Vector3::Zero();
+  RestWindow hand_rest_;  ///< the receiver's hand at rest again (moved_time window)
   bool hand_seen_at_start_ = false;
 };
 

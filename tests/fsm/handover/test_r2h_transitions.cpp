@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "fsm/handover/perception_checks.hpp"
+#include "fsm/handover/receiver_take.hpp"
 #include "tests/fsm/handover/fake_world.hpp"
 
 namespace handover::fsm::test {
@@ -206,6 +207,32 @@ TEST(HandoverR2H, AReceiverWhoMovesTheirHandElsewhereIsPresentedTheObjectThere) 
   ASSERT_TRUE(rig.runUntilState("/Approach", 2.0)) << rig.fsm->activePath();
   ASSERT_TRUE(rig.runUntilState("DetectPull", 10.0)) << rig.fsm->activePath();
   // presented where the hand is now
+  EXPECT_LT((rig.world.object - (rig.world.hand + rig.world.object_in_hand)).norm(), 0.02);
+}
+
+// The presentation settled while the receiver's hand paused between two
+// moves; the hand then came on 6 cm and stopped beside the object, near it
+// (within the 5 cm a hand may hold it from) but not taking it: no pull ever
+// comes. Waiting where the hand had been, the robot held the object out of
+// its reach until DetectPull timed out, and the gripper drifted into the
+// hand (g929_00162). A hand at rest again somewhere new is presented the
+// object there.
+TEST(HandoverR2H, AReceiverWhoseHandComesToRestBesideTheObjectIsPresentedItThere) {
+  io::ObjectShape ball;
+  ball.kind = io::ObjectShape::Kind::kSphere;
+  ball.size = Vector3(0.03, 0.0, 0.0);
+  Rig rig(true, false, ball);
+  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
+  rig.world.moveHand(kReceive, 0.5);
+  ASSERT_TRUE(rig.runUntilState("DetectPull", 20.0)) << rig.fsm->activePath();
+  const Vector3 beside = rig.world.hand + Vector3(0.0, 0.06, 0.0);
+  rig.world.moveHand(beside, 0.3);
+  rig.runFor(0.35);  // there now, the object within the hand's reach
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "DetectPull")) << rig.fsm->activePath();
+  ASSERT_GT((rig.world.hand - rig.world.object).norm() - 0.03, 0.02) << "not at the object";
+  ASSERT_LT((rig.world.hand - rig.world.object).norm() - 0.03, kReceiverGripReach) << "near enough to hold it";
+  ASSERT_TRUE(rig.runUntilState("/Approach", 1.5)) << rig.fsm->activePath();
+  ASSERT_TRUE(rig.runUntilState("DetectPull", 10.0)) << rig.fsm->activePath();
   EXPECT_LT((rig.world.object - (rig.world.hand + rig.world.object_in_hand)).norm(), 0.02);
 }
 
