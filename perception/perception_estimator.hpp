@@ -108,7 +108,9 @@ struct ObjectEstimate {
   /// the object's origin); `has_velocity` false otherwise.
   bool has_velocity = false;
   Eigen::Matrix<double, 6, 1> velocity = Eigen::Matrix<double, 6, 1>::Zero();
-  double speed_std = 0.0;  ///< m/s, as HumanEstimate::hand_speed_std, for `velocity`
+  /// m/s, as HumanEstimate::hand_speed_std, for `velocity`; carried by the
+  /// hand, with the hand's angular velocity's at the lever arm (hand to object)
+  double speed_std = 0.0;
 };
 
 struct PerceptionEstimate {
