@@ -181,10 +181,10 @@ const PerceptionEstimate& PerceptionEstimator::estimate(double now, ObjectHolder
         o.velocity.tail<3>() = w;
         // the turn's uncertainty at the lever arm is the object's too: a young track of a hand at
         // rest under 2 deg of noise read 0.5 m/s at an object 9 cm from it, "known" to 0.18 m/s, and
-        // an approach began toward a person who had not moved yet (g1013_00845)
-        if (settings_.model == MotionModel::kKalman)
-          o.speed_std = std::sqrt(std::max(0.0, hand_f_.positionCovariance().vv) +
-                                  std::max(0.0, hand_f_.rotationCovariance().vv) * lever.squaredNorm());
+        // an approach began toward a person who had not moved yet (g1013_00845). (A velocity is the
+        // Kalman model's: h.has_velocity)
+        o.speed_std = std::sqrt(std::max(0.0, hand_f_.positionCovariance().vv) +
+                                std::max(0.0, hand_f_.rotationCovariance().vv) * lever.squaredNorm());
       }
       break;
     case ObjectHolder::Robot:
