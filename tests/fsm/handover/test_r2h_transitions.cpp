@@ -13,6 +13,17 @@ namespace handover::fsm::test {
 namespace {
 
 const Vector3 kReceive(0.60, 0.0, 0.35);
+/// A ball of radius 3 cm: a known shape, so where the hand is against the
+/// object tells whether it may hold it.
+const io::ObjectShape kBall{io::ObjectShape::Kind::kSphere, Vector3(0.03, 0.0, 0.0)};
+
+/// The receiver's hand comes to kReceive once the robot waits for it; runs
+/// until the machine waits for the pull (DetectPull).
+bool handWaitingForThePull(Rig& rig) {
+  if (!rig.runUntilState("WaitForReceiver", 5.0)) return false;
+  rig.world.moveHand(kReceive, 0.5);
+  return rig.runUntilState("DetectPull", 20.0);
+}
 
 /// Takes the object once it has rested in the hand for 0.5 s, pulls while
 /// both hold it, and walks away with it once the robot lets go.
@@ -97,10 +108,7 @@ TEST(HandoverR2H, FingersBackOutAlongTheApproachAxisBeforeTurningAway) {
 // world's, as the runtime's): the ride follows the hand that takes it, and
 // following that estimate had followed the gripper itself, never the object.
 TEST(HandoverR2H, TheOpeningGripperRidesAlongWithTheObjectBeingTaken) {
-  io::ObjectShape ball;
-  ball.kind = io::ObjectShape::Kind::kSphere;
-  ball.size = Vector3(0.03, 0.0, 0.0);
-  Rig rig(true, false, ball);
+  Rig rig(true, false, kBall);
   ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
   rig.world.moveHand(kReceive, 0.5);
   rig.person = receiverWhoPulls(true);
@@ -193,13 +201,8 @@ TEST(HandoverR2H, APresentationSettlesThroughTheJitterOfTheHandsEstimate) {
 // still where the hand had been until DetectPull timed out and the receiver
 // gave up (g421_00463). A hand still at the object keeps the wait.
 TEST(HandoverR2H, AReceiverWhoMovesTheirHandElsewhereIsPresentedTheObjectThere) {
-  io::ObjectShape ball;  // known: where the hand is against the object tells
-  ball.kind = io::ObjectShape::Kind::kSphere;
-  ball.size = Vector3(0.03, 0.0, 0.0);
-  Rig rig(true, false, ball);
-  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
-  rig.world.moveHand(kReceive, 0.5);
-  ASSERT_TRUE(rig.runUntilState("DetectPull", 20.0)) << rig.fsm->activePath();
+  Rig rig(true, false, kBall);
+  ASSERT_TRUE(handWaitingForThePull(rig)) << rig.fsm->activePath();
   rig.runFor(1.0);  // a hand that stays: still waiting for its pull
   ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "DetectPull")) << rig.fsm->activePath();
   const Vector3 elsewhere = kReceive + Vector3(0.0, 0.10, 0.0);
@@ -218,19 +221,14 @@ TEST(HandoverR2H, AReceiverWhoMovesTheirHandElsewhereIsPresentedTheObjectThere) 
 // hand (g929_00162). A hand at rest again somewhere new is presented the
 // object there.
 TEST(HandoverR2H, AReceiverWhoseHandComesToRestBesideTheObjectIsPresentedItThere) {
-  io::ObjectShape ball;
-  ball.kind = io::ObjectShape::Kind::kSphere;
-  ball.size = Vector3(0.03, 0.0, 0.0);
-  Rig rig(true, false, ball);
-  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
-  rig.world.moveHand(kReceive, 0.5);
-  ASSERT_TRUE(rig.runUntilState("DetectPull", 20.0)) << rig.fsm->activePath();
+  Rig rig(true, false, kBall);
+  ASSERT_TRUE(handWaitingForThePull(rig)) << rig.fsm->activePath();
   const Vector3 beside = rig.world.hand + Vector3(0.0, 0.06, 0.0);
   rig.world.moveHand(beside, 0.3);
   rig.runFor(0.35);  // there now, the object within the hand's reach
   ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "DetectPull")) << rig.fsm->activePath();
-  ASSERT_GT((rig.world.hand - rig.world.object).norm() - 0.03, 0.02) << "not at the object";
-  ASSERT_LT((rig.world.hand - rig.world.object).norm() - 0.03, kReceiverGripReach) << "near enough to hold it";
+  ASSERT_GT((rig.world.hand - rig.world.object).norm() - kBall.size.x(), 0.02) << "not at the object";
+  ASSERT_LT((rig.world.hand - rig.world.object).norm() - kBall.size.x(), kReceiverGripReach) << "near enough to hold it";
   ASSERT_TRUE(rig.runUntilState("/Approach", 1.5)) << rig.fsm->activePath();
   ASSERT_TRUE(rig.runUntilState("DetectPull", 10.0)) << rig.fsm->activePath();
   EXPECT_LT((rig.world.object - (rig.world.hand + rig.world.object_in_hand)).norm(), 0.02);
@@ -274,10 +272,8 @@ TEST(HandoverR2H, BackingOutYieldsToAnObjectPulledIntoAFinger) {
 // the robot let go of an object nobody held and it fell. The same force from
 // the hand at the object is the pull.
 TEST(HandoverR2H, APushFromAHandAwayFromTheObjectIsNoPull) {
-  Rig rig(true, false, io::ObjectShape{io::ObjectShape::Kind::kSphere, Vector3(0.03, 0.0, 0.0)});
-  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
-  rig.world.moveHand(kReceive, 0.5);
-  ASSERT_TRUE(rig.runUntilState("DetectPull", 20.0)) << rig.fsm->activePath();
+  Rig rig(true, false, kBall);
+  ASSERT_TRUE(handWaitingForThePull(rig)) << rig.fsm->activePath();
   const Vector3 at_object = rig.world.hand;
   rig.world.hand = at_object + Vector3(0.0, -0.12, 0.0);
   rig.world.moveHand(rig.world.hand, 0.5);
@@ -293,9 +289,7 @@ TEST(HandoverR2H, APushFromAHandAwayFromTheObjectIsNoPull) {
 
 TEST(HandoverR2H, WaitingForThePullHoldsAtThePresentationPoseNotShortOfIt) {
   Rig rig(true);
-  ASSERT_TRUE(rig.runUntilState("WaitForReceiver", 5.0)) << rig.fsm->activePath();
-  rig.world.moveHand(kReceive, 0.5);
-  ASSERT_TRUE(rig.runUntilState("DetectPull", 20.0)) << rig.fsm->activePath();
+  ASSERT_TRUE(handWaitingForThePull(rig)) << rig.fsm->activePath();
   // the hold target is where the object is to be presented, even when
   // Present accepted a TCP a few centimetres short of it
   const HandoverInput in = rig.world.input(rig.ctl);
