@@ -2,7 +2,9 @@
 
 #include <algorithm>
 
+#include "fsm/handover/perception_checks.hpp"
 #include "fsm/handover/timed_move.hpp"
+#include "interfaces/object_shape.hpp"
 
 namespace handover::fsm {
 
@@ -15,12 +17,31 @@ void BackOut::configure(const YamlReader& def) {
   yield_force_ = readPositive(def, "yield_force", 200.0);
   yield_rate_ = readRange(def, "yield_rate", 0.0, 1.0);
   yield_distance_ = readRange(def, "yield_distance", 0.0, 0.5);
+  if (auto o = def.optionalChild("open_gripper")) open_gripper_ = o->asBool();
+  if (auto o = def.optionalChild("until_object_clear")) until_object_clear_ = o->asBool();
+}
+
+bool BackOut::objectClear(const HandoverContext& ctx) const {
+  const SensedBody& seen = ctx.in.object;
+  const io::ObjectShape& shape = ctx.object.shape;
+  if (shape.kind == io::ObjectShape::Kind::kUnknown || !fresh(seen, ctx.params->max_data_age)) return false;
+  const double reach = 0.5 * ctx.params->gripper_open_width + ctx.params->finger_half_span;
+  const Isometry tcp_in_object = seen.pose.inverse() * ctx.in.tcp_pose;
+  // points along the fingers' axis about a centimetre apart: the reach's radius covers between them
+  constexpr int kSegments = 10;
+  const double back = distance_, ahead = ctx.params->finger_pad_reach;
+  for (int i = 0; i <= kSegments; ++i) {
+    const double z = -back + (back + ahead) * i / kSegments;
+    if (io::signedDistance(shape, tcp_in_object * Vector3(0.0, 0.0, z)) <= reach) return false;
+  }
+  return true;
 }
 
 void BackOut::onStart(HandoverContext& ctx) {
   start_ = ctx.in.tcp_pose;
   start_time_ = ctx.in.time;
   yielded_.setZero();
+  if (open_gripper_) ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
   ride_.start(ctx);
   last_time_ = ctx.in.time;
   Isometry goal = start_;
@@ -57,7 +78,7 @@ bool BackOut::onRun(HandoverContext& ctx) {
   // progress along the approach axis only (the yield is across it): a
   // sideways push by the person must not hold the fingers in place
   const double backed = -(ctx.in.tcp_pose.translation() - start_.translation()).dot(axis);
-  if (backed >= distance_ - pos_tol_) {
+  if (backed >= distance_ - pos_tol_ || (until_object_clear_ && objectClear(ctx))) {
     setOutput(clear_);
     return true;
   }

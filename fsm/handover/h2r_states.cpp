@@ -331,6 +331,7 @@ void Grasp::onStart(HandoverContext& ctx) {
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
   closing_ = false;
   withdrawal_.restart();
+  pull_.restart();
   funnel_.restart(ctx.time);
   touches_ = 0;
   touch_since_ = -1.0;
@@ -446,7 +447,10 @@ bool Grasp::onRun(HandoverContext& ctx) {
     setStandoff(ctx, ctrl(), false, ctx.tracking_standoff, touch_shift_);
   }
   if (!closing_) {
-    if (withdrawal_.withdrawn(ctx, false)) {
+    // withdrawn, or taking it away through the open fingers: the object they carry off
+    // pushes a finger toward where they came from long before the motion tells a withdrawal
+    // (a tube pulled across the fingers struck one at 60-330 N, g1019_00215)
+    if (withdrawal_.withdrawn(ctx, false) || pull_.pulled(ctx, touch_time_)) {
       setOutput(withdrawn_);
       return true;
     }

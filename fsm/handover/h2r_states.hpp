@@ -144,8 +144,9 @@ class Approach : public HandoverState {
 /// confirm_time and the fingers have stopped (slower than stall_speed), the
 /// grasp is confirmed by a finger width above params.gripper.empty_width (not closed on
 /// nothing), else missed. Withdrawn: before closing, the person withdrew
-/// (withdrawn()); while closing, they take the object back (TakeBack for
-/// touch_time).
+/// (withdrawn()); before closing and while closing, they take the object back
+/// (TakeBack for touch_time: through the open fingers, it pushes one toward
+/// them).
 /// Slides in through the grasp funnel (grasp_funnel.hpp): backed off by up
 /// to `standoff` along the approach axis while the object does not fit
 /// between the open fingers, all the way in once it does; it closes only

@@ -278,6 +278,8 @@ struct World {
     if (robot_grip)
       in.interaction_force =
           Vector3(0, 0, robot_carries ? 0.0 : mass * 9.81) + (person_holds ? pull : Vector3::Zero()) + brush;
+    else
+      in.interaction_force = tool_contact.head<3>();  // holding nothing: what touches the gripper
     const double age = time - last_sample;
     in.hand.pose = handPose();
     const double sample_turn = 2.4 * std::floor(time * 30.0);  // rad: a new direction every sample

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include "fsm/handover/perception_checks.hpp"
 #include "interfaces/minimum_jerk.hpp"
 #include "tests/fsm/handover/fake_world.hpp"
 
@@ -13,11 +14,13 @@ namespace handover::fsm::test {
 namespace {
 
 
-/// The shipped WaitForOffer state's keys (config/fsm.yaml).
-YAML::Node shippedWaitForOffer() {
+/// A shipped human-to-robot state's keys (config/fsm.yaml).
+YAML::Node shippedTakeState(const char* name) {
   return YAML::LoadFile(HandoverFsm::defaultConfigPath())["machine"]["states"]["Handover"]["states"]["HumanToRobot"]
-                                                             ["states"]["WaitForOffer"];
+                                                             ["states"][name];
 }
+YAML::Node shippedWaitForOffer() { return shippedTakeState("WaitForOffer"); }
+YAML::Node shippedGrasp() { return shippedTakeState("Grasp"); }
 
 /// Lets go once the robot has gripped the object for 0.1 s, and withdraws.
 std::function<void(World&)> releasesAfterGrip() {
@@ -156,10 +159,108 @@ TEST(HandoverH2R, APersonWhoWithdrawsWhileTheFingersCloseIsLetGo) {
   ASSERT_GT(rig.world.width, rig.world.object_width + 0.01) << "the fingers already hold it";
   rig.world.moveHand(kAway, 0.8);
   ASSERT_TRUE(rig.runUntil([&] { return !Rig::endsWith(rig.fsm->activePath(), "Grasp"); }, 2.0));
-  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "RetreatOpen")) << rig.fsm->activePath();
+  EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "LetGo")) << rig.fsm->activePath();
   EXPECT_EQ(rig.ctl.gripper_width, rig.fsm->params().gripper_open_width);
   // let go while the fingers were still wider than the object: not after closing on nothing
   EXPECT_GT(rig.world.width, rig.world.object_width);
+  ASSERT_TRUE(rig.runUntilState("RetreatOpen", 2.0)) << rig.fsm->activePath();
+}
+
+// Given up with the fingers around the object the person keeps (here: they
+// take it back as the fingers close), the fingers open and leave it the way
+// they came in, riding along with it across the approach axis as it goes,
+// before the arm turns to its retreat: sent to the retreat pose at once, the
+// fingers stayed on a box pulled away across them and were dragged after it,
+// the wrist spun past its velocity limit (g1013_00380, 27 steps).
+TEST(HandoverH2R, FingersTheyTakeTheObjectBackFromLeaveItTheWayTheyCameIn) {
+  io::ObjectShape box;  // a shape: the ride goes as far as it takes to clear the fingers (7 cm)
+  box.kind = io::ObjectShape::Kind::kBox;
+  box.size = Vector3(0.05, 0.05, 0.10);
+  Rig rig(false, false, box);
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
+  ASSERT_TRUE(rig.runUntil([&] { return rig.ctl.gripper_width == 0.0; }, 5.0));
+  // the person pulls it away across the approach axis, toward where they came from
+  const Vector3 approach = rig.world.tcp.linear().col(2);
+  Vector3 away = kAway - rig.world.hand;
+  away -= away.dot(approach) * approach;
+  ASSERT_GT(away.norm(), 0.1);
+  rig.world.moveHand(rig.world.hand + 0.3 * away.normalized(), 0.4);
+  ASSERT_TRUE(rig.runUntilState("LetGo", 1.0)) << rig.fsm->activePath();
+  const Isometry at_start = rig.world.tcp;
+  const Vector3 object0 = rig.world.object;
+  EXPECT_EQ(rig.ctl.gripper_width, rig.fsm->params().gripper_open_width);  // open at once
+  EXPECT_FALSE(rig.ctl.tracking);
+  ASSERT_TRUE(rig.ctl.pose_active);
+  EXPECT_LT(rotationError(rig.ctl.pose, at_start), 1e-6);  // the orientation kept
+  const double t0 = rig.world.time;
+  rig.runFor(0.15);
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "LetGo")) << rig.fsm->activePath();
+  const Vector3 goal = rig.ctl.pose.translation() - at_start.translation();
+  const Vector3 object_moved = rig.world.object - object0;
+  // half way back along the approach axis at half time (0.08 m in 0.3 s, config/fsm.yaml)
+  EXPECT_NEAR(-goal.dot(approach), 0.04, 0.005);
+  // and across it with the object (seen moving 6 cm: along the same way, most of it)
+  const Vector3 across = goal - goal.dot(approach) * approach;
+  const Vector3 object_across = object_moved - object_moved.dot(approach) * approach;
+  ASSERT_GT(object_across.norm(), 0.04);
+  ASSERT_LT(object_across.norm(), io::boundingRadius(box) + rig.fsm->params().finger_half_span);
+  EXPECT_GT(across.dot(object_across.normalized()), 0.8 * object_across.norm());
+  ASSERT_TRUE(rig.runUntilState("RetreatOpen", 1.0)) << rig.fsm->activePath();
+  EXPECT_GT(rig.world.time - t0, 0.2);  // backed out first
+  EXPECT_GT(-(rig.world.tcp.translation() - at_start.translation()).dot(approach), 0.06);
+  ASSERT_TRUE(rig.runUntilState("WaitAgain", 6.0));
+  EXPECT_EQ(rig.fsm->stats().aborts, 1);  // one abort, counted once
+}
+
+// Withdrawn with the object before the fingers reached it, there is nothing to
+// leave the way they came in: LetGo ends as soon as the object is seen clear
+// of the fingers, instead of backing out of nothing while the arm's approach
+// carried it on (1.8 s of a retry's time, seed 1051's retries).
+TEST(HandoverH2R, AnObjectAlreadyClearOfTheFingersIsNotBackedOutOf) {
+  io::ObjectShape box;
+  box.kind = io::ObjectShape::Kind::kBox;
+  box.size = Vector3(0.05, 0.05, 0.10);
+  Rig rig(false, false, box);
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
+  rig.world.arm_stuck = true;  // held where it is: no closing meanwhile
+  rig.world.moveHand(kAway, 0.8);
+  ASSERT_TRUE(rig.runUntilState("LetGo", 2.0)) << rig.fsm->activePath();
+  const double since = rig.world.time;
+  ASSERT_GT((rig.world.object - rig.world.tcp.translation()).norm(), 0.15);  // well away from the fingers
+  ASSERT_TRUE(rig.runUntilState("RetreatOpen", 1.0)) << rig.fsm->activePath();
+  EXPECT_LT(rig.world.time - since, 0.01);
+  EXPECT_EQ(rig.ctl.gripper_width, rig.fsm->params().gripper_open_width);
+}
+
+// An object taken away through the open fingers pushes one toward where the
+// person came from long before the motion tells a withdrawal (0.3 m/s away for
+// 15 cm): a tube pulled across the fingers struck one at 60-330 N and dragged
+// the wrist past its velocity limit (g1019_00215). Felt and seen (the hand
+// going that way), for touch_time, it is let go; a push the other way (the
+// fingertips on the object's near side) is not.
+TEST(HandoverH2R, AnObjectTakenAwayThroughTheOpenFingersIsLetGo) {
+  Rig rig;
+  const Vector3 home = rig.world.hand;  // where their hand rested before it reached
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
+  rig.world.arm_stuck = true;  // held where it is: no closing meanwhile
+  Vector3 toward_home = home - kMeet;
+  toward_home.z() = 0.0;
+  toward_home.normalize();
+  // pushed the other way, toward the robot, as hard: no pull
+  rig.world.tool_contact.head<3>() = -15.0 * toward_home;
+  rig.world.moveHand(kMeet + 0.04 * toward_home, 0.2);
+  rig.runFor(0.1);
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Grasp")) << rig.fsm->activePath();
+  // the object they carry off (slower than a withdrawal) pushes a finger their way
+  rig.world.moveHand(kMeet + 0.3 * toward_home, 0.2);
+  rig.world.tool_contact.head<3>() = 15.0 * toward_home;
+  const double since = rig.world.time;
+  ASSERT_TRUE(rig.runUntilState("LetGo", 0.2)) << rig.fsm->activePath();
+  EXPECT_NEAR(rig.world.time - since, shippedGrasp()["touch_time"].as<double>(), 0.01);
+  EXPECT_EQ(rig.ctl.count("gripper 0.00"), 0);  // never closed on it
 }
 
 // The close is judged where the TCP will be when the fingers meet the object
@@ -860,16 +961,17 @@ TEST(HandoverH2R, NoReleaseOpensAndRetreatsWithoutPayload) {
   rig.world.moveHand(kMeet, 0.5);  // the person never lets go
   ASSERT_TRUE(rig.runUntilState("WaitForRelease", 10.0));
   const double since = rig.world.time;
-  ASSERT_TRUE(rig.runUntilState("RetreatOpen", 6.0));
+  ASSERT_TRUE(rig.runUntilState("LetGo", 6.0));
   EXPECT_NEAR(rig.world.time - since, 5.0, 0.01);
   EXPECT_GT(rig.findCall("gripper 0.08", rig.findCall("gripper 0.00")), 0);  // opened after closing
+  ASSERT_TRUE(rig.runUntilState("RetreatOpen", 2.0));
   EXPECT_EQ(rig.ctl.count("payload 0.30"), 0);
   EXPECT_EQ(rig.ctl.gripper_width, rig.fsm->params().gripper_open_width);
   ASSERT_TRUE(rig.runUntilState("WaitAgain", 5.0));
   EXPECT_TRUE(rig.world.person_holds);  // the person still has their object
   EXPECT_FALSE(rig.world.robot_grip);
   EXPECT_EQ(rig.leaves(), (Leaves{"SelectDirection", "WaitForOffer", "Approach", "Grasp", "WaitForRelease",
-                                  "RetreatOpen", "WaitAgain"}));
+                                  "LetGo", "RetreatOpen", "WaitAgain"}));
   EXPECT_EQ(rig.fsm->stats().aborts, 1);
   EXPECT_EQ(rig.fsm->stats().retries, 0);  // not back yet
 }
@@ -893,9 +995,10 @@ TEST(HandoverH2R, APersonWhoTakesTheObjectBackIsLetGo) {
   // felt too: the wrist feels them pull that way
   rig.world.pull = 15.0 * (home - kMeet).normalized();
   const double since = rig.world.time;
-  ASSERT_TRUE(rig.runUntilState("RetreatOpen", 1.0));
+  ASSERT_TRUE(rig.runUntilState("LetGo", 1.0));
   EXPECT_LT(rig.world.time - since, 0.1);
   EXPECT_EQ(rig.ctl.gripper_width, rig.fsm->params().gripper_open_width);
+  ASSERT_TRUE(rig.runUntilState("RetreatOpen", 2.0));
   EXPECT_EQ(rig.ctl.count("payload 0.30"), 0);
   EXPECT_TRUE(rig.world.person_holds);
   ASSERT_TRUE(rig.runUntilState("WaitAgain", 5.0));
@@ -915,7 +1018,7 @@ TEST(HandoverH2R, AnObjectThatSlidOutOfTheFingersIsNotWaitedFor) {
   rig.world.graspable = false;  // the person has it out: the fingers close on
   rig.world.robot_grip = false;
   const double since = rig.world.time;
-  ASSERT_TRUE(rig.runUntilState("RetreatOpen", 1.0));
+  ASSERT_TRUE(rig.runUntilState("LetGo", 1.0));
   // the fingers close from the object's 4 cm to empty in 0.36 s (0.1 m/s in this world)
   EXPECT_LT(rig.world.time - since, 0.45);
   EXPECT_EQ(rig.ctl.count("payload 0.30"), 0);
