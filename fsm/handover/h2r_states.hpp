@@ -231,7 +231,7 @@ class Grasp : public HandoverState {
   Vector3 regrip_shift_ = Vector3::Zero();  ///< m, object frame, applied once they are open
   Vector3 hand_at_close_ = Vector3::Zero(); ///< m, world: the hand when the fingers closed (it stays: it holds on)
   bool hand_at_close_known_ = false;
-  TakeBack pull_;                ///< while closing
+  TakeBack pull_;                ///< before and while closing (restarted at the close)
   WithdrawalWatch withdrawal_;   ///< before closing: the person leaves
 };
 
