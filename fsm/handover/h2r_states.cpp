@@ -332,6 +332,7 @@ void Grasp::onStart(HandoverContext& ctx) {
   closing_ = false;
   withdrawal_.restart();
   pull_.restart();
+  carried_.restart();
   funnel_.restart(ctx.time);
   touches_ = 0;
   touch_since_ = -1.0;
@@ -448,9 +449,11 @@ bool Grasp::onRun(HandoverContext& ctx) {
   }
   if (!closing_) {
     // withdrawn, or taking it away through the open fingers: the object they carry off
-    // pushes a finger toward where they came from long before the motion tells a withdrawal
-    // (a tube pulled across the fingers struck one at 60-330 N, g1019_00215)
-    if (withdrawal_.withdrawn(ctx, false) || pull_.pulled(ctx, touch_time_)) {
+    // pushes a finger toward where they came from, and the way their hand goes, long before
+    // the motion tells a withdrawal (a tube pulled across the fingers struck one at 60-330 N,
+    // g1019_00215)
+    const bool carried = carried_.carried(ctx, touch_time_);  // updated every cycle: its hold
+    if (withdrawal_.withdrawn(ctx, false) || pull_.pulled(ctx, touch_time_) || carried) {
       setOutput(withdrawn_);
       return true;
     }

@@ -146,7 +146,7 @@ class Approach : public HandoverState {
 /// nothing), else missed. Withdrawn: before closing, the person withdrew
 /// (withdrawn()); before closing and while closing, they take the object back
 /// (TakeBack for touch_time: through the open fingers, it pushes one toward
-/// them).
+/// them, or the way their hand goes: TakeBack::carried).
 /// Slides in through the grasp funnel (grasp_funnel.hpp): backed off by up
 /// to `standoff` along the approach axis while the object does not fit
 /// between the open fingers, all the way in once it does; it closes only
@@ -232,6 +232,7 @@ class Grasp : public HandoverState {
   Vector3 hand_at_close_ = Vector3::Zero(); ///< m, world: the hand when the fingers closed (it stays: it holds on)
   bool hand_at_close_known_ = false;
   TakeBack pull_;                ///< before and while closing (restarted at the close)
+  TakeBack carried_;             ///< before closing: the open fingers carried along (TakeBack::carried)
   WithdrawalWatch withdrawal_;   ///< before closing: the person leaves
 };
 

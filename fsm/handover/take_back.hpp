@@ -12,19 +12,32 @@ namespace handover::fsm {
 /// A person taking back the object the fingers close on or hold while they
 /// still carry it: pulledBack (perception_checks.hpp) with
 /// params.take_back_force, for a while. RT safe.
-struct TakeBack {
-  double since = -1.0;  ///< s, the pull began (< 0: none)
+class TakeBack {
+ public:
   void restart() { since = -1.0; }
   /// True once the pull has lasted `hold` s (never with take_back_force 0).
   /// `hand_speed` (m/s): how fast the hand must go (pulledBack).
   bool pulled(const HandoverContext& ctx, double hold, double hand_speed = 0.0) {
-    if (ctx.params->take_back_force <= 0.0 || !pulledBack(ctx, ctx.params->take_back_force, hand_speed)) {
+    const double f = ctx.params->take_back_force;
+    return lasted(ctx, hold, f > 0.0 && pulledBack(ctx, f, hand_speed));
+  }
+  /// True once the object has carried the open fingers along the hand's way
+  /// (carriedThrough with take_back_force) for `hold` s.
+  bool carried(const HandoverContext& ctx, double hold) {
+    const double f = ctx.params->take_back_force;
+    return lasted(ctx, hold, f > 0.0 && carriedThrough(ctx, f));
+  }
+
+ private:
+  bool lasted(const HandoverContext& ctx, double hold, bool now) {
+    if (!now) {
       since = -1.0;
       return false;
     }
     if (since < 0.0) since = ctx.time;
     return ctx.time - since >= hold;
   }
+  double since = -1.0;  ///< s, the pull began (< 0: none)
 };
 
 }  // namespace handover::fsm

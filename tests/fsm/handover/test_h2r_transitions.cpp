@@ -263,6 +263,43 @@ TEST(HandoverH2R, AnObjectTakenAwayThroughTheOpenFingersIsLetGo) {
   EXPECT_EQ(rig.ctl.count("gripper 0.00"), 0);  // never closed on it
 }
 
+// The object carried off through the open fingers pushes them the way the
+// person's hand goes, whichever way that is: a box drawn up and back past a
+// finger pushed it 12 N along the hand's way but only 8 N across the floor
+// toward the hand's home, and the wrist was spun past its velocity limit
+// before the motion told a withdrawal (g1063_00185). A push along a hand
+// that hardly moves (within twice its speed's noise), or against its way,
+// is not that.
+TEST(HandoverH2R, FingersCarriedAlongTheHandsWayLetTheObjectGo) {
+  Rig rig;
+  const Vector3 home = rig.world.hand;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
+  rig.world.arm_stuck = true;  // held where it is: no closing meanwhile
+  rig.world.speed_std = 0.05;  // m/s, what perception reports
+  // up, and across the way home: nothing of it toward home across the floor
+  Vector3 toward_home = home - kMeet;
+  toward_home.z() = 0.0;
+  toward_home.normalize();
+  const Vector3 way = (Vector3::UnitZ() + toward_home.cross(Vector3::UnitZ())).normalized();
+  ASSERT_LT(std::abs(way.dot(toward_home)), 1e-9);
+  // pushed that way while the hand stays (its speed under the noise): nothing
+  rig.world.tool_contact.head<3>() = 15.0 * way;
+  rig.runFor(0.1);
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Grasp")) << rig.fsm->activePath();
+  // the hand moves that way, the push against it: nothing
+  rig.world.moveHand(kMeet + 0.3 * way, 0.2);
+  rig.world.tool_contact.head<3>() = -15.0 * way;
+  rig.runFor(0.1);
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Grasp")) << rig.fsm->activePath();
+  // carried along its way
+  rig.world.tool_contact.head<3>() = 15.0 * way;
+  const double since = rig.world.time;
+  ASSERT_TRUE(rig.runUntilState("LetGo", 0.2)) << rig.fsm->activePath();
+  EXPECT_NEAR(rig.world.time - since, shippedGrasp()["touch_time"].as<double>(), 0.01);
+  EXPECT_EQ(rig.ctl.count("gripper 0.00"), 0);  // never closed on it
+}
+
 // The close is judged where the TCP will be when the fingers meet the object
 // (params.gripper.closing_speed), not once it has come to rest: it comes while
 // the TCP still slides in, and the fingers close on the object.
