@@ -452,7 +452,7 @@ bool Grasp::onRun(HandoverContext& ctx) {
     // pushes a finger toward where they came from, and the way their hand goes, long before
     // the motion tells a withdrawal (a tube pulled across the fingers struck one at 60-330 N,
     // g1019_00215)
-    const bool carried = carried_.carried(ctx, touch_time_);  // updated every cycle: its hold
+    const bool carried = carried_.carried(ctx, touch_time_, funnel_.motion_significance);  // every cycle: its hold
     if (withdrawal_.withdrawn(ctx, false) || pull_.pulled(ctx, touch_time_) || carried) {
       setOutput(withdrawn_);
       return true;

@@ -73,13 +73,12 @@ bool pulledBack(const HandoverContext& ctx, double force, double hand_speed) {
   return ctx.interaction.dot(d) > force && ctx.in.hand.velocity.head<3>().dot(d) > hand_speed;
 }
 
-bool carriedThrough(const HandoverContext& ctx, double force) {
+bool carriedThrough(const HandoverContext& ctx, double force, double significance) {
   const SensedBody& hand = ctx.in.hand;
   if (!fresh(hand, ctx.params->max_data_age)) return false;
   const Vector3 v = hand.velocity.head<3>();
   const double speed = v.norm();
-  constexpr double kSignificance = 2.0;  // standard deviations of the speed that are noise
-  if (!(speed > kSignificance * hand.speed_std) || speed < 1e-6) return false;
+  if (!(speed > significance * hand.speed_std) || speed < 1e-6) return false;
   return ctx.interaction.dot(v / speed) > force;
 }
 

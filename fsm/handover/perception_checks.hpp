@@ -61,12 +61,12 @@ bool pulledBack(const HandoverContext& ctx, double force, double hand_speed = 0.
 /// The object the person carries off through the open fingers: what
 /// touches the gripper (HandoverContext::interaction, the whole load while
 /// it holds nothing) pushes it more than `force` (N) along the way the
-/// person's hand, seen now, moves, and that motion is more than twice its
-/// speed's standard deviation. In any direction, not only toward where the
+/// person's hand, seen now, moves, and that motion is more than
+/// `significance` standard deviations of its speed. In any direction, not only toward where the
 /// hand came from: a box drawn up and back past a finger pushed it 12 N
 /// along the hand's way but 8 N across the floor toward its home
 /// (g1063_00185). RT safe.
-bool carriedThrough(const HandoverContext& ctx, double force);
+bool carriedThrough(const HandoverContext& ctx, double force, double significance);
 /// Position error (m) and rotation angle error (rad) between two poses.
 double positionError(const Isometry& a, const Isometry& b);
 double rotationError(const Isometry& a, const Isometry& b);

@@ -22,10 +22,11 @@ class TakeBack {
     return lasted(ctx, hold, f > 0.0 && pulledBack(ctx, f, hand_speed));
   }
   /// True once the object has carried the open fingers along the hand's way
-  /// (carriedThrough with take_back_force) for `hold` s.
-  bool carried(const HandoverContext& ctx, double hold) {
+  /// (carriedThrough with take_back_force; `significance`: standard
+  /// deviations of the hand's speed that are noise) for `hold` s.
+  bool carried(const HandoverContext& ctx, double hold, double significance) {
     const double f = ctx.params->take_back_force;
-    return lasted(ctx, hold, f > 0.0 && carriedThrough(ctx, f));
+    return lasted(ctx, hold, f > 0.0 && carriedThrough(ctx, f, significance));
   }
 
  private:

@@ -22,6 +22,34 @@ YAML::Node shippedTakeState(const char* name) {
 YAML::Node shippedWaitForOffer() { return shippedTakeState("WaitForOffer"); }
 YAML::Node shippedGrasp() { return shippedTakeState("Grasp"); }
 
+io::ObjectShape boxOf(const Vector3& size) {
+  io::ObjectShape box;
+  box.kind = io::ObjectShape::Kind::kBox;
+  box.size = size;
+  return box;
+}
+
+/// The person brings the object to kMeet; the open gripper is held where it
+/// is once Grasp begins (no closing meanwhile). Returns the unit direction
+/// across the floor toward where their hand came from.
+Vector3 heldOpenInGrasp(Rig& rig) {
+  const Vector3 home = rig.world.hand;
+  rig.world.moveHand(kMeet, 0.5);
+  EXPECT_TRUE(rig.runUntilState("Grasp", 10.0)) << rig.fsm->activePath();
+  rig.world.arm_stuck = true;
+  Vector3 toward_home = home - kMeet;
+  toward_home.z() = 0.0;
+  return toward_home.normalized();
+}
+
+/// Let go (LetGo) after Grasp's touch_time from now, the fingers never closed.
+void expectLetGoAfterTouchTime(Rig& rig) {
+  const double since = rig.world.time;
+  ASSERT_TRUE(rig.runUntilState("LetGo", 0.2)) << rig.fsm->activePath();
+  EXPECT_NEAR(rig.world.time - since, shippedGrasp()["touch_time"].as<double>(), 0.01);
+  EXPECT_EQ(rig.ctl.count("gripper 0.00"), 0);  // never closed on it
+}
+
 /// Lets go once the robot has gripped the object for 0.1 s, and withdraws.
 std::function<void(World&)> releasesAfterGrip() {
   auto gripped_since = std::make_shared<double>(-1.0);
@@ -173,9 +201,8 @@ TEST(HandoverH2R, APersonWhoWithdrawsWhileTheFingersCloseIsLetGo) {
 // fingers stayed on a box pulled away across them and were dragged after it,
 // the wrist spun past its velocity limit (g1013_00380, 27 steps).
 TEST(HandoverH2R, FingersTheyTakeTheObjectBackFromLeaveItTheWayTheyCameIn) {
-  io::ObjectShape box;  // a shape: the ride goes as far as it takes to clear the fingers (7 cm)
-  box.kind = io::ObjectShape::Kind::kBox;
-  box.size = Vector3(0.05, 0.05, 0.10);
+  // a shape: the ride goes as far as it takes to clear the fingers (7 cm)
+  const io::ObjectShape box = boxOf(Vector3(0.05, 0.05, 0.10));
   Rig rig(false, false, box);
   rig.world.moveHand(kMeet, 0.5);
   ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
@@ -218,9 +245,7 @@ TEST(HandoverH2R, FingersTheyTakeTheObjectBackFromLeaveItTheWayTheyCameIn) {
 // of the fingers, instead of backing out of nothing while the arm's approach
 // carried it on (1.8 s of a retry's time, seed 1051's retries).
 TEST(HandoverH2R, AnObjectAlreadyClearOfTheFingersIsNotBackedOutOf) {
-  io::ObjectShape box;
-  box.kind = io::ObjectShape::Kind::kBox;
-  box.size = Vector3(0.05, 0.05, 0.10);
+  const io::ObjectShape box = boxOf(Vector3(0.05, 0.05, 0.10));
   Rig rig(false, false, box);
   rig.world.moveHand(kMeet, 0.5);
   ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
@@ -242,13 +267,8 @@ TEST(HandoverH2R, AnObjectAlreadyClearOfTheFingersIsNotBackedOutOf) {
 // fingertips on the object's near side) is not.
 TEST(HandoverH2R, AnObjectTakenAwayThroughTheOpenFingersIsLetGo) {
   Rig rig;
-  const Vector3 home = rig.world.hand;  // where their hand rested before it reached
-  rig.world.moveHand(kMeet, 0.5);
-  ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
-  rig.world.arm_stuck = true;  // held where it is: no closing meanwhile
-  Vector3 toward_home = home - kMeet;
-  toward_home.z() = 0.0;
-  toward_home.normalize();
+  const Vector3 toward_home = heldOpenInGrasp(rig);
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Grasp")) << rig.fsm->activePath();
   // pushed the other way, toward the robot, as hard: no pull
   rig.world.tool_contact.head<3>() = -15.0 * toward_home;
   rig.world.moveHand(kMeet + 0.04 * toward_home, 0.2);
@@ -257,10 +277,7 @@ TEST(HandoverH2R, AnObjectTakenAwayThroughTheOpenFingersIsLetGo) {
   // the object they carry off (slower than a withdrawal) pushes a finger their way
   rig.world.moveHand(kMeet + 0.3 * toward_home, 0.2);
   rig.world.tool_contact.head<3>() = 15.0 * toward_home;
-  const double since = rig.world.time;
-  ASSERT_TRUE(rig.runUntilState("LetGo", 0.2)) << rig.fsm->activePath();
-  EXPECT_NEAR(rig.world.time - since, shippedGrasp()["touch_time"].as<double>(), 0.01);
-  EXPECT_EQ(rig.ctl.count("gripper 0.00"), 0);  // never closed on it
+  expectLetGoAfterTouchTime(rig);
 }
 
 // The object carried off through the open fingers pushes them the way the
@@ -272,15 +289,10 @@ TEST(HandoverH2R, AnObjectTakenAwayThroughTheOpenFingersIsLetGo) {
 // is not that.
 TEST(HandoverH2R, FingersCarriedAlongTheHandsWayLetTheObjectGo) {
   Rig rig;
-  const Vector3 home = rig.world.hand;
-  rig.world.moveHand(kMeet, 0.5);
-  ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
-  rig.world.arm_stuck = true;  // held where it is: no closing meanwhile
+  const Vector3 toward_home = heldOpenInGrasp(rig);
+  ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Grasp")) << rig.fsm->activePath();
   rig.world.speed_std = 0.05;  // m/s, what perception reports
   // up, and across the way home: nothing of it toward home across the floor
-  Vector3 toward_home = home - kMeet;
-  toward_home.z() = 0.0;
-  toward_home.normalize();
   const Vector3 way = (Vector3::UnitZ() + toward_home.cross(Vector3::UnitZ())).normalized();
   ASSERT_LT(std::abs(way.dot(toward_home)), 1e-9);
   // pushed that way while the hand stays (its speed under the noise): nothing
@@ -294,19 +306,15 @@ TEST(HandoverH2R, FingersCarriedAlongTheHandsWayLetTheObjectGo) {
   ASSERT_TRUE(Rig::endsWith(rig.fsm->activePath(), "Grasp")) << rig.fsm->activePath();
   // carried along its way
   rig.world.tool_contact.head<3>() = 15.0 * way;
-  const double since = rig.world.time;
-  ASSERT_TRUE(rig.runUntilState("LetGo", 0.2)) << rig.fsm->activePath();
-  EXPECT_NEAR(rig.world.time - since, shippedGrasp()["touch_time"].as<double>(), 0.01);
-  EXPECT_EQ(rig.ctl.count("gripper 0.00"), 0);  // never closed on it
+  expectLetGoAfterTouchTime(rig);
 }
 
 // The close is judged where the TCP will be when the fingers meet the object
 // (params.gripper.closing_speed), not once it has come to rest: it comes while
 // the TCP still slides in, and the fingers close on the object.
 TEST(HandoverH2R, GraspClosesWhereTheTcpWillBeWhenTheFingersMeetTheObject) {
-  io::ObjectShape box;
-  box.kind = io::ObjectShape::Kind::kBox;
-  box.size = Vector3(0.04, 0.04, 0.04);  // 4 cm across the fingers: 2 cm of clearance per side
+  // 4 cm across the fingers: 2 cm of clearance per side
+  const io::ObjectShape box = boxOf(Vector3(0.04, 0.04, 0.04));
   Rig rig(false, false, box);
   rig.world.moveHand(kMeet, 0.5);
   ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
@@ -335,9 +343,8 @@ Vector6 touchAt(const Isometry& tcp, double along, double push) {
 }
 
 TEST(HandoverH2R, AFingertipFeltOnTheObjectMovesTheGraspTowardIt) {
-  io::ObjectShape box;
-  box.kind = io::ObjectShape::Kind::kBox;
-  box.size = Vector3(0.05, 0.05, 0.10);  // 15 mm to spare on each side of the open fingers
+  // 15 mm to spare on each side of the open fingers
+  const io::ObjectShape box = boxOf(Vector3(0.05, 0.05, 0.10));
   Rig rig(false, false, box);
   rig.world.moveHand(kMeet, 0.5);
   ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
@@ -427,9 +434,7 @@ TEST(HandoverH2R, FingersClosedShortOfWhereARoundSideHoldsOpenAndGraspDeeper) {
 // Pushed back hard for jam_time (config/fsm.yaml: 20 N, 0.2 s), the grasp is missed and the
 // gripper backs off open; a touch's brief push (the fingertip corrections above) is not a jam.
 TEST(HandoverH2R, AnOpenGripperJammedAgainstTheObjectBacksOffOpen) {
-  io::ObjectShape box;
-  box.kind = io::ObjectShape::Kind::kBox;
-  box.size = Vector3(0.05, 0.05, 0.10);
+  const io::ObjectShape box = boxOf(Vector3(0.05, 0.05, 0.10));
   Rig rig(false, false, box);
   rig.world.moveHand(kMeet, 0.5);
   ASSERT_TRUE(rig.runUntilState("Grasp", 10.0));
@@ -738,9 +743,8 @@ TEST(HandoverH2R, AStruckGripperApproachesOnAtTheSoftGains) {
 // pose first), with the hand clearance relaxed as in Grasp; not while the
 // object is still brought in, nor while the TCP is off the approach line.
 TEST(HandoverH2R, ApproachSlidesInOnceTheObjectHasArrivedAndFits) {
-  io::ObjectShape box;
-  box.kind = io::ObjectShape::Kind::kBox;
-  box.size = Vector3(0.05, 0.05, 0.10);  // 15 mm to spare on each side of the open fingers
+  // 15 mm to spare on each side of the open fingers
+  const io::ObjectShape box = boxOf(Vector3(0.05, 0.05, 0.10));
   Rig rig(false, false, box);
   const HandoverParams& p = rig.fsm->params();
   // the tracked frame backed off along its approach axis: offset = grasp * (0, 0, -standoff)
@@ -789,9 +793,7 @@ TEST(HandoverH2R, ApproachSlidesInOnceTheObjectHasArrivedAndFits) {
 // it comes. Without the horizon the slide goes on onto it.
 TEST(HandoverH2R, AnObjectPushedAtThePalmDuringTheSlideIsBackedAwayFromFasterThanTheSlide) {
   for (const bool budget : {true, false}) {
-    io::ObjectShape box;
-    box.kind = io::ObjectShape::Kind::kBox;
-    box.size = Vector3(0.05, 0.05, 0.10);
+    const io::ObjectShape box = boxOf(Vector3(0.05, 0.05, 0.10));
     Rig rig(false, false, box, [budget](YAML::Node& doc) {
       if (budget) return;
       YAML::Node h2r = doc["machine"]["states"]["Handover"]["states"]["HumanToRobot"]["states"];
