@@ -99,9 +99,11 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   const Vector3 pos = (p.anticipate_reach ? restPose(body) : body.pose).translation();
   const Vector3* home = homeOf(ctx, hand_);
   const bool at_home = home_radius_ > 0.0 && home != nullptr && (pos - *home).norm() < home_radius_;
-  // back where it was first seen after it had been out twice that far: the person withdrew before
-  // the arm came (a receiver who reached while it went to its ready pose), in or out of the workspace
-  const bool back_home = at_home && farthestFromHome(ctx, hand_) > 2.0 * home_radius_;
+  // back where it was first seen after it had been out of that circle: the person withdrew before
+  // the arm came (a receiver who reached while it went to its ready pose), in or out of the workspace.
+  // How far it went is low-passed (a transient is no excursion), so out is out: a receiver who went
+  // 9.7 cm out and back (under twice home_radius, the rule before) was served at their hip (g1051_00727)
+  const bool back_home = at_home && farthestFromHome(ctx, hand_) > home_radius_;
   if (withdrawn_ >= 0 && back_home && fresh(body, p.max_data_age)) {
     ++ctx.stats.aborts;  // as a Retreat counts it: coming back is a retry
     ctx.retry_pending = ctx.stats.retries < p.max_retries;

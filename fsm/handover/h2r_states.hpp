@@ -29,8 +29,8 @@ namespace handover::fsm {
 /// with home_rest_time (s, >= settle_time) such a rest is an offer once it
 /// lasted that long (a person who holds the object out where they were
 /// first seen, and waits). With withdrawn_at_home: true, the body seen back
-/// within home_radius of there after it had been more than twice that from
-/// it (HandoverContext::*_farthest_from_home) is the person back at rest:
+/// within home_radius of there after it had been out of that circle
+/// (HandoverContext::*_farthest_from_home, low-passed) is the person back at rest:
 /// [Withdrawn] at once, in the workspace or not (counted as an abort, coming
 /// back is a retry). Coming is faster than approach_speed by
 /// approach_significance (default 0) standard deviations of the velocity

@@ -307,10 +307,14 @@ TEST(HandoverR2H, WaitingForThePullHoldsAtThePresentationPoseNotShortOfIt) {
 // reached again (g911_00186). Now that is WaitAgain at once (an abort): a
 // receiver who comes again is served (a retry), one who stays home has left
 // and the give ends aborted within WaitAgain's timeout, not the first wait's.
-// How far the hand went is low-passed (withdraw.away_time_constant).
+// How far the hand went is low-passed (withdraw.away_time_constant). Out
+// of home_radius is out: a receiver whose hand went 9.7 cm toward the arm
+// and back (under twice home_radius) was served at their hip, and the
+// fingers, turned about the held tube, met the resting hand (g1051_00727).
 TEST(HandoverR2H, AReceiverBackAtRestWhereTheyWereFirstSeenWithdrew) {
   const Vector3 home(0.55, 0.25, 0.25);  // 0.6 m from the shoulder, in the workspace
-  for (const int run : {0, 1, 2}) {      // 0: held out at home; 1: out and back, then comes; 2: stays home
+  for (const int run : {0, 1, 2, 3}) {   // 0: held out at home; 1: out and back, then comes; 2: stays home;
+                                         // 3: a short way out (1.6 home_radius) and back, stays home
     Rig rig(true);
     rig.world.hand = rig.world.hand_goal = home;
     if (run == 0) {
@@ -329,12 +333,13 @@ TEST(HandoverR2H, AReceiverBackAtRestWhereTheyWereFirstSeenWithdrew) {
       EXPECT_EQ(std::find(seen.begin(), seen.end(), "WaitAgain"), seen.end());
       continue;
     }
-    // round a circle 15 cm across and back, slower than approach_speed and faster than
+    // round a circle 15 cm (8 cm) across and back, slower than approach_speed and faster than
     // settle_speed: no rest on the way (a reversal in place would be one), no coming
-    const Vector3 centre = home + Vector3(0.0, 0.075, 0.0);
+    const double r = run == 3 ? 0.04 : 0.075;
+    const Vector3 centre = home + Vector3(0.0, r, 0.0);
     for (int k = 1; k <= 72 && Rig::endsWith(rig.fsm->activePath(), "WaitForReceiver"); ++k) {
       const double a = -0.5 * M_PI + k * 2.0 * M_PI / 72.0;
-      const Vector3 at = centre + 0.075 * Vector3(std::cos(a), std::sin(a), 0.0);
+      const Vector3 at = centre + r * Vector3(std::cos(a), std::sin(a), 0.0);
       rig.world.moveHand(at, 0.08);
       rig.runUntil([&] { return (rig.world.hand - at).norm() < 1e-9 || !Rig::endsWith(rig.fsm->activePath(), "WaitForReceiver"); }, 1.0);
     }
