@@ -154,6 +154,7 @@ void DetectPull::configure(const YamlReader& def) {
     if (def.has("rest_speed")) rest_speed_ = readPositive(def, "rest_speed", 1.0);
     moved_ = declareOutput("Moved");
   }
+  if (auto s = def.optionalChild("stiff_hold")) stiff_hold_ = s->asBool();
 }
 
 void DetectPull::onStart(HandoverContext& ctx) {
@@ -170,6 +171,14 @@ void DetectPull::onStart(HandoverContext& ctx) {
   // presented: Present accepts a TCP short of it by up to its tolerance,
   // and the last centimetres are what put the object in the hand
   ctrl().setPoseTarget(trackedGraspFrame(ctx));
+  // stiff_hold: as Release holds. At the pose task's own K = 6 (meant for retracts) the wrist is a
+  // weak spring (K M_77, about 0.1 N m/rad), and while the receiver's hand is near the load is no
+  // longer compensated (contact_wrench, disturbance: `carry`): a tube held from the side turned
+  // joint 7 by 1 rad in 2.5 s and swept the fingers into the palm resting under it (g1051_00727;
+  // scenes/scenarios/r2h_hand_rests_under.yaml, 595 contact steps). A pull builds its force sooner
+  if (stiff_hold_)
+    ctrl().setPoseStiffness(ctx.params->closing_tracking_translation_stiffness,
+                            ctx.params->closing_tracking_orientation_stiffness);
 }
 
 bool DetectPull::onRun(HandoverContext& ctx) {

@@ -77,7 +77,9 @@ class Present : public HandoverState {
   WithdrawalWatch withdrawal_;  ///< the receiver leaves: Withdrawn
 };
 
-/// [Pulled] Holds the TCP still and records the filtered force (object and
+/// [Pulled] Holds the TCP still (with stiff_hold: true, as stiffly as
+/// Release does, at the tracking's closing gains: the weak wrist of the pose
+/// task's own gains drifted under the uncompensated load) and records the filtered force (object and
 /// hand weight included); pulled when the filtered force differs from it by
 /// more than pull_threshold for hold_time. Set a `timeout` for "no pull".
 /// With `moved_time` (s), [Moved]: the receiver's hand, seen, has gone more
@@ -91,7 +93,7 @@ class Present : public HandoverState {
 /// the ball but not at it, waited 6 s, and the gripper drifted into it:
 /// g929_00162). A hand that grips and pulls pulls within the window.
 /// Keys: pull_threshold (N), hold_time (s), moved_time (s, optional),
-/// rest_speed (m/s, with moved_time, default 0.05).
+/// rest_speed (m/s, with moved_time, default 0.05), stiff_hold (bool, default false).
 class DetectPull : public HandoverState {
  public:
   DetectPull();
@@ -104,6 +106,7 @@ class DetectPull : public HandoverState {
 
   int pulled_, moved_ = -1;
   double threshold_ = 3.0, hold_time_ = 0.05, moved_time_ = 0.0, rest_speed_ = 0.05;
+  bool stiff_hold_ = false;  ///< held at the tracking's closing gains, not the pose task's own
   double since_ = -1.0, moved_since_ = -1.0;
   Vector3 hand_at_start_ = Vector3::Zero();
   RestWindow hand_rest_;  ///< the receiver's hand at rest again (moved_time window)

@@ -287,7 +287,7 @@ TEST(HandoverR2H, APushFromAHandAwayFromTheObjectIsNoPull) {
   EXPECT_TRUE(rig.runUntilState("Release", 1.0)) << rig.fsm->activePath();
 }
 
-TEST(HandoverR2H, WaitingForThePullHoldsAtThePresentationPoseNotShortOfIt) {
+TEST(HandoverR2H, WaitingForThePullHoldsStifflyAtThePresentationPoseNotShortOfIt) {
   Rig rig(true);
   ASSERT_TRUE(handWaitingForThePull(rig)) << rig.fsm->activePath();
   // the hold target is where the object is to be presented, even when
@@ -297,6 +297,11 @@ TEST(HandoverR2H, WaitingForThePullHoldsAtThePresentationPoseNotShortOfIt) {
   ASSERT_TRUE(rig.ctl.pose_active);
   EXPECT_LT(positionError(rig.ctl.pose, in.target_pose), 1e-4);
   EXPECT_LT(rotationError(rig.ctl.pose, in.target_pose), 0.01);
+  // and held there stiffly (as Release holds): at the pose task's own gains the wrist is a weak
+  // spring, and a side-held tube turned joint 7 by 1 rad into the palm resting under it
+  // (g1051_00727; end to end: scenes/scenarios/r2h_hand_rests_under.yaml)
+  EXPECT_TRUE(rig.ctl.pose_gains_active);
+  EXPECT_EQ(rig.ctl.pose_gains_translation, rig.fsm->params().closing_tracking_translation_stiffness);
 }
 
 // A receiver's hand at rest where it was first seen, within reach, is
