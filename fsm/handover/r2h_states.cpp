@@ -175,7 +175,7 @@ void DetectPull::onStart(HandoverContext& ctx) {
   // weak spring (K M_77, about 0.1 N m/rad), and while the receiver's hand is near the load is no
   // longer compensated (contact_wrench, disturbance: `carry`): a tube held from the side turned
   // joint 7 by 1 rad in 2.5 s and swept the fingers into the palm resting under it (g1051_00727;
-  // scenes/scenarios/r2h_hand_rests_under.yaml, 595 contact steps). A pull builds its force sooner
+  // the shipped scenario r2h_hand_rests_under, 595 contact steps). A pull builds its force sooner
   if (stiff_hold_)
     ctrl().setPoseStiffness(ctx.params->closing_tracking_translation_stiffness,
                             ctx.params->closing_tracking_orientation_stiffness);
