@@ -559,8 +559,7 @@ void WaitForRelease::hold(HandoverContext& ctx) {
   ctrl().enableTracking(false);
   ctrl().setPoseTarget(ctx.in.tcp_pose);
   // as stiff as the closing fingers were held
-  ctrl().setPoseStiffness(ctx.params->closing_tracking_translation_stiffness,
-                          ctx.params->closing_tracking_orientation_stiffness);
+  holdAtClosingGains(*ctx.params, ctrl());
   holding_ = true;
 }
 

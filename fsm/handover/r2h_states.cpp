@@ -171,14 +171,12 @@ void DetectPull::onStart(HandoverContext& ctx) {
   // presented: Present accepts a TCP short of it by up to its tolerance,
   // and the last centimetres are what put the object in the hand
   ctrl().setPoseTarget(trackedGraspFrame(ctx));
-  // stiff_hold: as Release holds. At the pose task's own K = 6 (meant for retracts) the wrist is a
-  // weak spring (K M_77, about 0.1 N m/rad), and while the receiver's hand is near the load is no
-  // longer compensated (contact_wrench, disturbance: `carry`): a tube held from the side turned
-  // joint 7 by 1 rad in 2.5 s and swept the fingers into the palm resting under it (g1051_00727;
-  // the shipped scenario r2h_hand_rests_under, 595 contact steps). A pull builds its force sooner
-  if (stiff_hold_)
-    ctrl().setPoseStiffness(ctx.params->closing_tracking_translation_stiffness,
-                            ctx.params->closing_tracking_orientation_stiffness);
+  // stiff_hold: as Release holds. While the receiver's hand is near, the load is no longer
+  // compensated (contact_wrench, disturbance: `carry`), and at the pose task's own gains a tube held
+  // from the side turned joint 7 by 1 rad in 2.5 s and swept the fingers into the palm resting under
+  // it (g1051_00727; the shipped scenario r2h_hand_rests_under, 595 contact steps). A pull builds its
+  // force sooner
+  if (stiff_hold_) holdAtClosingGains(*ctx.params, ctrl());
 }
 
 bool DetectPull::onRun(HandoverContext& ctx) {
@@ -232,8 +230,7 @@ void Release::onStart(HandoverContext& ctx) {
   // as it opened (g787_00457). Only while the fingers open: stiff on in
   // ConfirmGone, the gripper stood in the way of a cylinder pulled out at
   // 0.6 m/s and the blow spun joint 6 past its limit (g823_00417)
-  ctrl().setPoseStiffness(ctx.params->closing_tracking_translation_stiffness,
-                          ctx.params->closing_tracking_orientation_stiffness);
+  holdAtClosingGains(*ctx.params, ctrl());
 }
 
 bool Release::onRun(HandoverContext& ctx) {

@@ -14,7 +14,7 @@ namespace handover::fsm {
 /// params.take_back_force, for a while. RT safe.
 class TakeBack {
  public:
-  void restart() { since = -1.0; }
+  void restart() { since_ = -1.0; }
   /// True once the pull has lasted `hold` s (never with take_back_force 0).
   /// `hand_speed` (m/s): how fast the hand must go (pulledBack).
   bool pulled(const HandoverContext& ctx, double hold, double hand_speed = 0.0) {
@@ -32,13 +32,13 @@ class TakeBack {
  private:
   bool lasted(const HandoverContext& ctx, double hold, bool now) {
     if (!now) {
-      since = -1.0;
+      since_ = -1.0;
       return false;
     }
-    if (since < 0.0) since = ctx.time;
-    return ctx.time - since >= hold;
+    if (since_ < 0.0) since_ = ctx.time;
+    return ctx.time - since_ >= hold;
   }
-  double since = -1.0;  ///< s, the pull began (< 0: none)
+  double since_ = -1.0;  ///< s, the pull began (< 0: none)
 };
 
 }  // namespace handover::fsm

@@ -45,6 +45,15 @@ inline void setTrackingGains(const HandoverParams& p, ControllerHandle& ctrl, Tr
 /// the follow gains from the arrive speed on, linear between: soft while the
 /// person still brings the body in, stiff once it has arrived. Without
 /// arrive gains, the phase gains as they are. RT safe.
+/// A set-point held against the person (the fingers on the object, a
+/// presentation waiting for the pull) at the tracking's closing gains: the
+/// pose task's own K = 6, meant for retracts, is a weak spring at the wrist
+/// (K M_77, about 0.1 N m/rad), and the arm gives way to what it holds and
+/// to the person. RT safe.
+inline void holdAtClosingGains(const HandoverParams& p, ControllerHandle& ctrl) {
+  ctrl.setPoseStiffness(p.closing_tracking_translation_stiffness, p.closing_tracking_orientation_stiffness);
+}
+
 inline void setPhaseGainsForSpeed(const HandoverParams& p, ControllerHandle& ctrl, TrackingGains phase, double speed,
                                   bool take = false) {
   const bool align = phase == TrackingGains::kAlign && p.align_tracking_translation_stiffness > 0.0 &&
