@@ -287,13 +287,17 @@ RunSummary runScenario(const scenario::Scenario& sc, const RunOptions& opt) {
       f.hand_speed = tracker ? cycle.handVelocity().head<3>().norm() : hout.hand_speed;
       f.finger_width = arm.finger_width;
       f.min_human_distance = std::isfinite(d_human) ? d_human : 1e9;
-      const Eigen::Isometry3d grasp_true = obj_true.pose * held.grasp;
+      // judged against the grasp the robot chose (one of the families the object
+      // admits), the declared one without a planner
+      const fsm::TrackedChoice& chosen = cycle.machine().context().grasp;
+      const Eigen::Isometry3d grasp_in_object = chosen.planned ? chosen.offset : held.grasp;
+      const Eigen::Isometry3d grasp_true = obj_true.pose * grasp_in_object;
       const Eigen::Isometry3d tcp_true = sim.tcpPose();
       f.grasp_pos_error = (tcp_true.translation() - grasp_true.translation()).norm();
       if (grasp.has_free_axis) {
         // only the approach axis matters around a symmetry axis
         const Eigen::Vector3d a = (obj_true.pose.linear() * grasp.free_axis).normalized();
-        const Eigen::Vector3d b = (tcp_true.linear() * held.grasp.linear().transpose() * grasp.free_axis).normalized();
+        const Eigen::Vector3d b = (tcp_true.linear() * grasp_in_object.linear().transpose() * grasp.free_axis).normalized();
         f.grasp_rot_error_deg = std::acos(std::clamp(a.dot(b), -1.0, 1.0)) * 180.0 / M_PI;
       } else {
         f.grasp_rot_error_deg = Eigen::AngleAxisd(tcp_true.linear().transpose() * grasp_true.linear()).angle() * 180.0 / M_PI;
