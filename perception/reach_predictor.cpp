@@ -50,7 +50,8 @@ void ReachPredictor::add(double t, const Eigen::Isometry3d& pose, double speed) 
     }
   }
   if (rest_time_ < 0.0 || speed < settings_.rest_speed) {
-    // at rest (or the first sample): the end is where the hand is
+    // at rest (or the first sample): the end is where the hand is (end_trusted
+    // tells whether a trusted reach ended here)
     rest_time_ = t;
     onset_time_ = -1.0;
     pred_.reaching = false;
@@ -62,6 +63,7 @@ void ReachPredictor::add(double t, const Eigen::Isometry3d& pose, double speed) 
     if (speed < settings_.onset_speed) return;  // drifting, not reaching (yet)
     onset_time_ = t;
     pred_.reaching = true;
+    pred_.end_trusted = false;
   }
   fit(speed);
 }
@@ -213,6 +215,7 @@ void ReachPredictor::fit(double speed) {
   const bool consistent =
       bracketed && pred_.residual <= settings_.max_residual && speed <= 1.5 * fitted_speed + 0.1;
   pred_.lead = consistent ? ramp : 0.0;
+  pred_.end_trusted = pred_.lead >= 1.0;
 }
 
 Eigen::Isometry3d ReachPredictor::ledPose(const Eigen::Isometry3d& hand, const Eigen::Isometry3d& pose) const {

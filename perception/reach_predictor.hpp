@@ -56,6 +56,10 @@ struct ReachPrediction {
   double start = 0.0;     ///< s, fitted t0
   double duration = 0.0;  ///< s, fitted T
   double residual = 0.0;  ///< m, RMS of the fit
+  /// The latest fit of this reach trusted its end fully (lead 1), kept once the
+  /// hand rests there; false before, after a new onset and after a gap that lost
+  /// the reach: the end the arm may have set off toward, known or not.
+  bool end_trusted = false;
   Eigen::Isometry3d end = Eigen::Isometry3d::Identity();     ///< fitted resting pose
 };
 

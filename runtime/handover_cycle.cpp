@@ -115,9 +115,10 @@ void HandoverCycle::plan() {
   if ((predict_reach_ || forecast_hand_) && h.valid && !h.stale)
     reach_.add(estimate_->time, h.hand, hand_vel_.velocity().head<3>().norm());
   if (!planning_) return;
-  // once the reach's end is known the arm heads for one grasp there: no switching on the way
-  const perception::ReachPrediction& reach = reach_.prediction();
-  planning_->holdObjectChoice(adapter_.anticipatingRest() && (reach.lead >= 1.0 || !reach.reaching));
+  // once the reach's end is known the arm heads for one grasp there: no switching on the
+  // way, nor once the hand rests there. A reach whose end was never trusted (lost in a
+  // dropout, wandering) holds nothing: the first choice was made on a moving hand
+  planning_->holdObjectChoice(adapter_.anticipatingRest() && reach_.prediction().end_trusted);
   const perception::PerceptionEstimate& est = adapter_.anticipatingRest() ? led_ : *estimate_;
   control::Isometry torso;
   if (settings_.stand.declared) torso = torsoUnderShoulder(est.human.upper_arm.translation(), settings_.stand);

@@ -126,6 +126,40 @@ TEST(ReachPredictor, ComingToRestEndsTheReach) {
   EXPECT_LT((p.prediction().end.translation() - r.to).norm(), 1e-6);
 }
 
+TEST(ReachPredictor, ATrustedEndStaysTrustedOnceTheHandRestsThereUntilTheNextReach) {
+  // the arm set off toward the fitted end: once the hand rests there that end is
+  // still the one it heads for (the grasp chosen for it is kept); a new reach is not
+  ReachPredictor p;
+  Reach r;
+  feed(p, r, 0.0, r.t0 + 0.3 * r.T);
+  EXPECT_TRUE(p.prediction().reaching);
+  EXPECT_FALSE(p.prediction().end_trusted) << "before the speed peak";
+  feed(p, r, r.t0 + 0.3 * r.T + 0.001, r.t0 + 0.7 * r.T);
+  EXPECT_TRUE(p.prediction().end_trusted);
+  feed(p, r, r.t0 + 0.7 * r.T + 0.001, r.t0 + r.T + 0.3);
+  EXPECT_FALSE(p.prediction().reaching);
+  EXPECT_TRUE(p.prediction().end_trusted) << "the hand rests where the trusted end was";
+  Reach next;
+  next.from = r.to;
+  next.to = r.to + Eigen::Vector3d(0.0, -0.25, 0.05);
+  next.t0 = r.t0 + r.T + 0.3;
+  feed(p, next, next.t0, next.t0 + 0.3 * next.T);
+  EXPECT_TRUE(p.prediction().reaching);
+  EXPECT_FALSE(p.prediction().end_trusted) << "a new reach, its end not fitted yet";
+}
+
+TEST(ReachPredictor, AReachLostInAGapEndsWithNoTrustedEnd) {
+  // the person unseen from before the speed peak until the hand has stopped: the
+  // reach's end was never trusted, so nothing the arm chose on the way is to be kept
+  ReachPredictor p;
+  Reach r;
+  feed(p, r, 0.0, r.t0 + 0.2 * r.T);
+  const double back = r.t0 + r.T + 0.1;
+  for (double t = back; t <= back + 1.0; t += 0.001) p.add(t, r.pose(t), 0.0);
+  EXPECT_FALSE(p.prediction().reaching);
+  EXPECT_FALSE(p.prediction().end_trusted);
+}
+
 TEST(ReachPredictor, AGapInTheSamplesLosesTheReachUntilTheHandRests) {
   // the person unseen for 0.4 s mid-reach (longer than the estimator's reseed gap):
   // its track restarts at rest, so the first speeds after the gap are 0 and rise
