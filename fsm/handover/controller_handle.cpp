@@ -152,6 +152,12 @@ void ControllerHandle::anticipateRest(bool on) {
   change(Channel::kAnticipation, next);
 }
 
+void ControllerHandle::fingersAroundObject(bool around) {
+  ScopedCommands next = ledger_->current();
+  next.fingers_around_object = around;
+  change(Channel::kFingersAround, next);
+}
+
 void ControllerHandle::relaxHandClearance(bool relaxed) {
   ScopedCommands next = ledger_->current();
   next.hand_clearance_relaxed = relaxed;

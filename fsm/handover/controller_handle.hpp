@@ -75,6 +75,8 @@ class ControllerHandle {
   /// Back to the pose task's configured stiffnesses.
   void clearPoseStiffness();
   void relaxHandClearance(bool relaxed);
+  /// The fingers are around the object the person holds (ControllerInterface::fingersAroundObject).
+  void fingersAroundObject(bool around);
   /// Targets where the person's reach will end (ControllerInterface::anticipateRest).
   void anticipateRest(bool on);
   /// Any task by name (config/controller.yaml `tasks:`): its handle, -1 if

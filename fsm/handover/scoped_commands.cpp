@@ -62,6 +62,9 @@ void sendPoseGains(ControllerInterface& ctl, const H& t, const ScopedCommands& v
 void sendHandClearance(ControllerInterface& ctl, const H&, const ScopedCommands& v) {
   ctl.relaxHandClearance(v.hand_clearance_relaxed);
 }
+void sendFingersAround(ControllerInterface& ctl, const H&, const ScopedCommands& v) {
+  ctl.fingersAroundObject(v.fingers_around_object);
+}
 void sendAnticipation(ControllerInterface& ctl, const H&, const ScopedCommands& v) {
   ctl.anticipateRest(v.anticipate_rest);
 }
@@ -87,6 +90,7 @@ constexpr ChannelEntry kTable[] = {
     row<&S::task_switches>(Channel::kTaskSwitches, "task_switches", &sendTaskSwitches),
     row<&S::anticipate_rest>(Channel::kAnticipation, "anticipate_rest", &sendAnticipation),
     row<&S::pose_gains>(Channel::kPoseGains, "pose_gains", &sendPoseGains),
+    row<&S::fingers_around_object>(Channel::kFingersAround, "fingers_around_object", &sendFingersAround),
 };
 static_assert(sizeof(kTable) / sizeof(kTable[0]) == kNumChannels, "one row per channel");
 

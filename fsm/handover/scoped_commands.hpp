@@ -68,6 +68,7 @@ struct ScopedCommands {
   TaskSwitches task_switches;
   bool anticipate_rest = false;  ///< targets where the person's reach will end
   GainsCommand pose_gains;       ///< the pose task's (e.g. a stiff hold while the person lets go)
+  bool fingers_around_object = false;  ///< the fingers are around the object the person holds
 };
 
 /// Every channel compared through the table.
@@ -87,6 +88,7 @@ enum class Channel : std::uint8_t {
   kTaskSwitches,
   kAnticipation,
   kPoseGains,
+  kFingersAround,
   kCount
 };
 constexpr std::size_t kNumChannels = static_cast<std::size_t>(Channel::kCount);

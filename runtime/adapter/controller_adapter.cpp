@@ -80,18 +80,23 @@ void ControllerAdapter::relaxHandClearance(bool relaxed) {
   applyClearances();
 }
 
+void ControllerAdapter::fingersAroundObject(bool around) {
+  fingers_around_ = around;
+  applyClearances();
+}
+
 void ControllerAdapter::applyClearances() {
   if (collision_ == nullptr) return;
   auto set = [this](int rule, bool on) {
     if (collision_->ruleEnabled(rule) != on) collision_->setRuleEnabled(rule, on);  // a switch resets its dampers
   };
-  if (object_rule_ >= 0) set(object_rule_, !hand_relaxed_ && !payload_set_);
+  if (object_rule_ >= 0) set(object_rule_, !hand_relaxed_ && !payload_set_ && !fingers_around_);
   const std::vector<control::RuleScope>& scope = collision_->collisionModel().rule_scope;
   for (int i = 0; i < static_cast<int>(scope.size()); ++i) {
     if (i == object_rule_) continue;
     if (scope[i] == control::RuleScope::kApart) set(i, !hand_relaxed_);
     if (scope[i] == control::RuleScope::kSharing) set(i, hand_relaxed_);
-    if (scope[i] == control::RuleScope::kTaking) set(i, hand_relaxed_ && !payload_set_);
+    if (scope[i] == control::RuleScope::kTaking) set(i, hand_relaxed_ && !payload_set_ && !fingers_around_);
   }
 }
 

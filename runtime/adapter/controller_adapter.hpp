@@ -40,6 +40,7 @@ class ControllerAdapter : public fsm::ControllerInterface {
   void setObservationTarget(fsm::ObservationTarget target) override;
   void setSpeedScale(double scale) override;
   void relaxHandClearance(bool relaxed) override;
+  void fingersAroundObject(bool around) override;
   void anticipateRest(bool on) override { anticipate_ = on; }
   /// The collision constraint whose scoped rules (`when: apart | sharing`,
   /// control/collision/collision_config.hpp) follow the state machine's
@@ -95,6 +96,7 @@ class ControllerAdapter : public fsm::ControllerInterface {
   double speed_scale_ = 1.0;
   control::CollisionConstraint* collision_ = nullptr;
   int object_rule_ = -1;
+  bool fingers_around_ = false;  ///< the fingers are around the person's object: object and `taking` rules off
   bool hand_relaxed_ = false;
 };
 

@@ -152,11 +152,35 @@ TEST(HandoverCycle, TheTakingRuleIsOnOnlyWhileSharingAnObjectThePersonCarries) {
   EXPECT_FALSE(cycle.collision().ruleEnabled(taking));  // the robot carries it
   adapter.clearPayload();
   EXPECT_TRUE(cycle.collision().ruleEnabled(taking));
+  // the fingers hold it, the person too (WaitForRelease): nothing left for the rule to keep
+  adapter.fingersAroundObject(true);
+  EXPECT_FALSE(cycle.collision().ruleEnabled(taking));
+  EXPECT_FALSE(cycle.collision().ruleEnabled(cycle.handGripperRule()));  // still sharing: apart rules off
+  adapter.fingersAroundObject(false);
+  EXPECT_TRUE(cycle.collision().ruleEnabled(taking));
   adapter.relaxHandClearance(false);
   EXPECT_FALSE(cycle.collision().ruleEnabled(taking));
   // no sensing budget on it: the hand and the object are where the fingers work
   for (const control::CollisionPair& p : cm.pairs)
     if (p.rule == taking) EXPECT_EQ(p.margin, 0.0);
+}
+
+// The gripper keeps off the object the person holds out (it lines up beside it) but not
+// while its fingers are around it: leaving it open (a give's BackOut) the object still
+// lies between them, and the rule pushed the gripper out of a tilted tube at once
+// (g1093_00313). The clearances from the person are not the fingers' business here.
+TEST(HandoverCycle, TheObjectRuleIsOffWhileTheFingersAreAroundTheObject) {
+  HandoverCycle cycle(defaultCycleSettings());
+  const auto& cm = cycle.collision().collisionModel();
+  const int object = cm.ruleIndex("object_gripper");
+  ASSERT_GE(object, 0);
+  ControllerAdapter& adapter = cycle.adapter();
+  EXPECT_TRUE(cycle.collision().ruleEnabled(object));  // apart, nothing held
+  adapter.fingersAroundObject(true);
+  EXPECT_FALSE(cycle.collision().ruleEnabled(object));
+  EXPECT_TRUE(cycle.collision().ruleEnabled(cycle.handGripperRule()));  // the person's hand: as apart
+  adapter.fingersAroundObject(false);
+  EXPECT_TRUE(cycle.collision().ruleEnabled(object));
 }
 
 // Trackers do not see the trunk: with a declared stand the cycle places it

@@ -42,6 +42,7 @@ struct RecordingController : ControllerInterface {
   bool pose_gains_active = false;  // the pose task's, values only
   double pose_gains_translation = 0.0;
   bool hand_relaxed = false;     // values only (not in `calls`)
+  bool fingers_around_object = false;      // values only (not in `calls`)
   bool anticipate = false;
   double gripper_width = 0.08;
   bool payload = false;
@@ -122,6 +123,7 @@ struct RecordingController : ControllerInterface {
     if (record) calls.push_back("speed " + num(s));
   }
   void relaxHandClearance(bool relaxed) override { hand_relaxed = relaxed; }
+  void fingersAroundObject(bool around) override { fingers_around_object = around; }
   void anticipateRest(bool on) override { anticipate = on; }
   void setGripper(double w, double) override {
     gripper_width = w;

@@ -34,6 +34,7 @@ ScopedCommands allChanged() {
   v.pose_gains.active = true;
   v.pose_gains.translation = 60.0;
   v.pose_gains.orientation = 120.0;
+  v.fingers_around_object = true;
   return v;
 }
 
@@ -53,6 +54,7 @@ void changeThroughHandle(ControllerHandle& h, Channel c) {
     case Channel::kTaskSwitches: h.setTaskEnabled(3, true); break;
     case Channel::kAnticipation: h.anticipateRest(v.anticipate_rest); break;
     case Channel::kPoseGains: h.setPoseStiffness(v.pose_gains.translation, v.pose_gains.orientation); break;
+    case Channel::kFingersAround: h.fingersAroundObject(v.fingers_around_object); break;
     case Channel::kCount: break;
   }
 }
