@@ -327,6 +327,7 @@ void Grasp::configure(const YamlReader& def) {
   }
   if (def.has("regrips")) max_regrips_ = static_cast<int>(readRange(def, "regrips", 0.0, 5.0));
   if (def.has("release_distance")) release_distance_ = readRange(def, "release_distance", 0.0, 0.3);
+  if (def.has("regrip_max_share")) regrip_max_share_ = readRange(def, "regrip_max_share", 0.0, 1.0);
 }
 
 void Grasp::onStart(HandoverContext& ctx) {
@@ -421,8 +422,9 @@ bool Grasp::jammed(const HandoverContext& ctx) {
 
 bool Grasp::regrip(HandoverContext& ctx) {
   if (regrips_ >= max_regrips_ || !hand_at_close_known_ || !fresh(ctx.in.hand, ctx.params->max_data_age) ||
-      (ctx.in.hand.pose.translation() - hand_at_close_).norm() > release_distance_)
-    return false;  // the person may have let go: opening now would drop it
+      (ctx.in.hand.pose.translation() - hand_at_close_).norm() > release_distance_ ||
+      ctx.in.load_share >= regrip_max_share_)
+    return false;  // the person may have let go (moved off, or the weight coming over): opening now would drop it
   const FingerFit f = fitNow(ctx);
   if (f.near_face > 1e6 || !(f.hold_depth > 0.0)) return false;
   const Isometry object = correctedObject(ctx);
@@ -541,15 +543,21 @@ void WaitForRelease::configure(const YamlReader& def) {
     def.fail("needs release_share (the robot's load share, 0..1) or release_fraction (of m g)");
   }
   hold_time_ = readRange(def, "hold_time", 0.0, 5.0);
+  if (def.has("motion_significance")) significance_ = readRange(def, "motion_significance", 0.0, 10.0);
 }
 
 void WaitForRelease::onStart(HandoverContext& ctx) {
   ctrl().relaxHandClearance(true);  // the hand and the gripper share the object now
+  // and the fingers hold it: the clearance they kept from the hand while closing has
+  // nothing left to do (they cannot leave it without the object); against a hand touching
+  // them it turned the wrist at its speed limit instead (g1097_00374)
+  ctrl().fingersAroundObject(true);
   since_ = -1.0;
   holding_ = false;
   hand_started_ = false;
   carry_since_ = -1.0;
   pull_.restart();
+  carried_.restart();
   // follow the object while the person still holds it, where the fingers closed on it
   // (the grasp as Grasp corrected it by touch: ctx.tracking_shift)
   trackTarget(ctx, ctrl(), false, 0.0, TrackingGains::kFollow, ctx.tracking_shift);
@@ -587,8 +595,12 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   // past their velocity limits). Felt and seen: a pull toward them, their hand going that
   // way (the object's estimate sits in that hand until the robot holds it, so the hand
   // alone cannot tell a person who let go and leaves). Not the load share: a pull down and
-  // away reads as the object's weight
-  if (pull_.pulled(ctx, hold_time_) || ctx.in.finger_width < ctx.params->gripper_empty_width) {
+  // away reads as the object's weight. Nor only across the floor: a person withdrawing
+  // down and back pulled 20 N along their hand's way, 10 N across the floor only once
+  // their hand went 0.4 m/s, and the arm dragged after them spun joint 6 past its speed
+  // limit (g1069_00050); the pull along the way the hand goes (carried) tells it 0.3 s sooner
+  const bool carried = carried_.carried(ctx, hold_time_, significance_);  // every cycle: its hold
+  if (pull_.pulled(ctx, hold_time_) || carried || ctx.in.finger_width < ctx.params->gripper_empty_width) {
     setOutput(withdrawn_);
     return true;
   }

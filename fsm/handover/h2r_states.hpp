@@ -179,8 +179,12 @@ class Approach : public HandoverState {
 /// out of a 5.0 cm pinch of its 6.6 cm): while the person still holds the
 /// object (their hand has not moved from it by release_distance), the
 /// fingers open, the grasp moves along the approach axis by as much as the
-/// pads fell short, and they close again. regrips (optional, default 0) times
-/// per attempt; release_distance (m, default 0.015).
+/// pads fell short, and they close again. Not once the weight is coming over
+/// (the robot's load share at least regrip_max_share): the person lets go
+/// before their hand moves, and opening then dropped the object they had just
+/// let go of (g1097_00316: the share 0.61, the hand still). regrips
+/// (optional, default 0) times per attempt; release_distance (m, default
+/// 0.015); regrip_max_share (0..1, default 1: any share).
 class Grasp : public HandoverState {
  public:
   Grasp();
@@ -227,6 +231,7 @@ class Grasp : public HandoverState {
   int max_regrips_ = 0;
   int regrips_ = 0;
   double release_distance_ = 0.015;  ///< m the hand moves off the object when it lets go
+  double regrip_max_share_ = 1.0;    ///< load share from which the person is letting go: no regrip
   bool reopening_ = false;           ///< a regrip: the fingers open before the grasp moves in
   Vector3 regrip_shift_ = Vector3::Zero();  ///< m, object frame, applied once they are open
   Vector3 hand_at_close_ = Vector3::Zero(); ///< m, world: the hand when the fingers closed (it stays: it holds on)
@@ -275,9 +280,13 @@ class Grasp : public HandoverState {
 /// only once the robot carries the object (payload set). Not a narrowing of
 /// the grip alone: an object that turns in the fingers as the person lets go
 /// narrows it too, and opening then dropped it (g1_00060).
+/// The person takes it back (params.withdraw.take_back_force, for hold_time):
+/// pulled toward where their hand came from across the floor, or along the way
+/// their hand goes once it moves (more than motion_significance standard
+/// deviations of its speed estimate): Withdrawn, the fingers open.
 /// Keys: release_share (0..1) with release_distance (m), release_wait
 /// (s) and hold_share (0.05..release_share, default release_share), or
-/// release_fraction (0..2); hold_time (s).
+/// release_fraction (0..2); hold_time (s); motion_significance (default 2).
 class WaitForRelease : public HandoverState {
  public:
   WaitForRelease();
@@ -288,6 +297,8 @@ class WaitForRelease : public HandoverState {
  private:
   int released_, withdrawn_;
   TakeBack pull_;
+  TakeBack carried_;            ///< the pull along the way the person's hand goes (TakeBack::carried)
+  double significance_ = 2.0;   ///< motion_significance: standard deviations of the hand's speed that are noise
   double fraction_ = 0.7, hold_time_ = 0.1;
   double share_ = -1.0;  ///< release_share; < 0: the force rule
   double hold_share_ = 1.0;  ///< hold_share (<= release_share): the load share from which the TCP is held still

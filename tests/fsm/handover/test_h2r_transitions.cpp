@@ -194,6 +194,52 @@ TEST(HandoverH2R, APersonWhoWithdrawsWhileTheFingersCloseIsLetGo) {
   ASSERT_TRUE(rig.runUntilState("RetreatOpen", 2.0)) << rig.fsm->activePath();
 }
 
+// While the fingers hold the object the person still holds, the clearance the
+// closing fingers kept from the hand is off (fingersAroundObject): the fingers
+// cannot leave the hand without the object, and against a hand touching them
+// the QP turned the wrist at its speed limit (g1097_00374). Only there.
+TEST(HandoverH2R, TheFingersThatHoldTheSharedObjectNoLongerKeepOffTheHand) {
+  Rig rig;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("Grasp", 10.0)) << rig.fsm->activePath();
+  EXPECT_FALSE(rig.ctl.fingers_around_object) << "closing: the fingers keep off the hand";
+  ASSERT_TRUE(rig.runUntilState("WaitForRelease", 5.0)) << rig.fsm->activePath();
+  EXPECT_TRUE(rig.ctl.fingers_around_object);
+  EXPECT_TRUE(rig.ctl.hand_relaxed);
+  rig.person = releasesAfterGrip();
+  ASSERT_TRUE(rig.runUntilState("Retract", 5.0)) << rig.fsm->activePath();
+  EXPECT_FALSE(rig.ctl.fingers_around_object) << "outlived WaitForRelease";
+}
+
+// The person takes back the object the robot already holds (WaitForRelease),
+// pulling it down and toward themselves: the pull across the floor stays small
+// (a quarter of it here), along the way their hand goes it is the whole pull.
+// Let go on the across-the-floor rule alone, the arm was dragged after a hand
+// going 0.4 m/s and joint 6 spun past its speed limit (g1069_00050).
+TEST(HandoverH2R, APersonWhoPullsTheHeldObjectDownAndAwayTakesItBack) {
+  Rig rig;
+  const Vector3 home = rig.world.hand;
+  rig.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(rig.runUntilState("WaitForRelease", 10.0)) << rig.fsm->activePath();
+  ASSERT_TRUE(rig.world.robot_grip);
+  rig.world.speed_std = 0.02;  // m/s: a filtered estimate's noise, the motion must stand out of
+  Vector3 across = home - rig.world.hand;
+  across.z() = 0.0;
+  const Vector3 way = (0.25 * across.normalized() - Vector3::UnitZ()).normalized();
+  const double pull = 1.5 * rig.fsm->params().take_back_force;
+  ASSERT_LT(pull * way.dot(across.normalized()), rig.fsm->params().take_back_force) << "the old rule would tell it";
+  rig.world.pull = pull * way;
+  rig.world.moveHand(rig.world.hand + 0.3 * way, 0.3);
+  const double since = rig.world.time;
+  ASSERT_TRUE(rig.runUntilState("LetGo", 0.5)) << rig.fsm->activePath();
+  // at once (hold_time), while the fingers still hold it: not once the object was torn out of
+  // them (the fake arm does not follow it) and they closed on nothing
+  EXPECT_LT(rig.world.time - since, 0.1);
+  EXPECT_NEAR(rig.world.width, rig.world.object_width, 1e-3);
+  EXPECT_EQ(rig.ctl.gripper_width, rig.fsm->params().gripper_open_width);
+  EXPECT_EQ(rig.fsm->stats().handovers, 0);
+}
+
 // Given up with the fingers around the object the person keeps (here: they
 // take it back as the fingers close), the fingers open and leave it the way
 // they came in, riding along with it across the approach axis as it goes,
@@ -419,6 +465,15 @@ TEST(HandoverH2R, FingersClosedShortOfWhereARoundSideHoldsOpenAndGraspDeeper) {
   left.world.hand_goal = left.world.hand;
   EXPECT_TRUE(left.runUntilState("WaitForRelease", 2.0)) << left.fsm->activePath();
   EXPECT_EQ(left.ctl.count("gripper 0.00"), 1);
+
+  // the weight coming over as the fingers close (the robot bears 60 % of it), the hand not moved
+  // yet: the person is letting go, and opening would drop it (g1097_00316): no regrip
+  Rig letting_go(false, false, ball);
+  ASSERT_TRUE(closes(letting_go));
+  letting_go.world.share = 0.6;
+  EXPECT_TRUE(letting_go.runUntilState("WaitForRelease", 2.0)) << letting_go.fsm->activePath();
+  EXPECT_EQ(letting_go.ctl.count("gripper 0.00"), 1);
+  EXPECT_EQ(letting_go.ctl.count("gripper 0.08"), 1) << "opened again";
 
   // closed to the ball's whole width: held, no regrip
   Rig full(false, false, ball);
