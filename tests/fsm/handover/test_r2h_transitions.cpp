@@ -121,20 +121,6 @@ TEST(HandoverR2H, TheOpenFingersAreAroundTheObjectUntilItIsClearOfThem) {
   EXPECT_FALSE(rig.ctl.fingers_around_object);
 }
 
-// A give's back-out ends once the receiver has taken the object clear of the
-// fingers, however far it got: riding along with a receiver who took it far
-// out, the arm stretched to joint 4's limit short of the full 8 cm and waited
-// for the 2 s timeout (g1099_00001).
-TEST(HandoverR2H, TheBackOutEndsOnceTheObjectIsClearOfTheFingers) {
-  Rig rig(true, false, kBall);
-  ASSERT_TRUE(pulledIntoBackOut(rig)) << rig.fsm->activePath();
-  rig.world.arm_stuck = true;  // at a limit: no backing out at all
-  const double since = rig.world.time;
-  rig.world.moveHand(rig.world.hand + Vector3(0.3, 0.0, 0.0), 1.0);  // the ball leaves, to the side
-  ASSERT_TRUE(rig.runUntilState("Retract", 1.5)) << rig.fsm->activePath();
-  EXPECT_LT(rig.world.time - since, 1.0) << "waited for the timeout";
-}
-
 // From the release on, the receiver takes the object away, here along the
 // axis the fingers close along: the opening gripper rides along with it as it
 // is seen (its rate fed forward), not along the approach axis, and only as
