@@ -43,13 +43,6 @@ void BackOut::onStart(HandoverContext& ctx) {
   yielded_.setZero();
   if (open_gripper_) ctrl().setGripper(ctx.params->gripper_open_width, ctx.params->gripper_force);
   ride_.start(ctx);
-  // the fingers still straddle the object the person holds: the rule that keeps the gripper
-  // off the object (on again with the payload cleared) stays off until it is clear of them.
-  // Switched on here, it met a tilted tube 2.5 cm inside a finger's capsule, pushed the
-  // gripper out of it at once and spun joint 6 past its speed limit (g1093_00313). The
-  // clearances from the person stay as they are: their hand leaves with the object
-  around_ = !objectClear(ctx);
-  ctrl().fingersAroundObject(around_);
   last_time_ = ctx.in.time;
   Isometry goal = start_;
   ctrl().enableTracking(false);
@@ -85,12 +78,7 @@ bool BackOut::onRun(HandoverContext& ctx) {
   // progress along the approach axis only (the yield is across it): a
   // sideways push by the person must not hold the fingers in place
   const double backed = -(ctx.in.tcp_pose.translation() - start_.translation()).dot(axis);
-  const bool clear = objectClear(ctx);
-  if (around_ && clear) {
-    around_ = false;
-    ctrl().fingersAroundObject(false);
-  }
-  if (backed >= distance_ - pos_tol_ || (until_object_clear_ && clear)) {
+  if (backed >= distance_ - pos_tol_ || (until_object_clear_ && objectClear(ctx))) {
     setOutput(clear_);
     return true;
   }

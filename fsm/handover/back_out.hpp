@@ -31,15 +31,6 @@
 // seen clear of them (its shape outside the fingers' reach), instead of a
 // gripper that backs out of nothing for a second while the arm's approach
 // momentum carries it on.
-//
-// Until the object is seen clear of the fingers (objectClear()), they are
-// still around it (ControllerInterface::fingersAroundObject): the rule that
-// keeps the gripper off the object stays off. Switched on as the fingers
-// opened around a tilted tube (the payload cleared), it found the tube 2.5 cm
-// inside a finger's capsule and pushed the gripper out at once, joint 6 past
-// its speed limit (g1093_00313). Relaxing the whole hand clearance instead
-// counted the leaving hand into the slow-down overlay (the back-out of the
-// basic give took 1.5 s instead of 0.35 s).
 #pragma once
 
 #include "fsm/handover/handover_state.hpp"
@@ -73,7 +64,6 @@ class BackOut : public HandoverState {
   double yield_force_ = 20.0, yield_rate_ = 0.01, yield_distance_ = 0.15;  // config/fsm.yaml sets them
   bool open_gripper_ = false;
   bool until_object_clear_ = false;
-  bool around_ = false;  ///< the fingers still straddle the object (objectClear()): fingersAroundObject
   /// The object seen (fresh) with its shape clear of the fingers' reach: the
   /// approach axis from `distance` behind the TCP to the pad tips, grown by
   /// half the open width and a pad's half span. False when unseen or its shape

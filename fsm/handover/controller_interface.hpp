@@ -102,16 +102,13 @@ class ControllerInterface {
   /// the person's hand and the gripper is switched off; every other person
   /// and self-collision clearance stays. Optional (default: ignored).
   virtual void relaxHandClearance(bool relaxed) { (void)relaxed; }
-  /// The fingers are around the object the person holds: closed on it,
-  /// waiting for the release, or open and leaving it the way they came in.
-  /// The clearances of a gripper that comes for the object are off: the one
-  /// kept from the object itself, and the one the closing fingers keep from
-  /// the person's hand (collision rules `when: taking`). Closed, the fingers
-  /// cannot leave the hand without the object (against a hand that touched
-  /// them the wrist turned at its speed limit instead, g1097_00374); open,
-  /// the object still lies between them (a tilted tube found 2.5 cm inside a
-  /// finger's capsule was pushed out of at once, g1093_00313). Optional
-  /// (default: ignored).
+  /// The fingers are around the object the person holds (closed on it,
+  /// waiting for the release). The clearances of a gripper that comes for
+  /// the object are off: the one kept from the object itself, and the one the
+  /// closing fingers keep from the person's hand (collision rules `when:
+  /// taking`). The fingers cannot leave the hand without the object: against
+  /// a hand that touched them the wrist turned at its speed limit instead
+  /// (g1097_00374). Optional (default: ignored).
   virtual void fingersAroundObject(bool around) { (void)around; }
   /// The observation target (and the grasp planning) read where the person's
   /// reaching hand will come to rest (perception/reach_predictor.hpp) instead

@@ -166,9 +166,8 @@ TEST(HandoverCycle, TheTakingRuleIsOnOnlyWhileSharingAnObjectThePersonCarries) {
 }
 
 // The gripper keeps off the object the person holds out (it lines up beside it) but not
-// while its fingers are around it: leaving it open (a give's BackOut) the object still
-// lies between them, and the rule pushed the gripper out of a tilted tube at once
-// (g1093_00313). The clearances from the person are not the fingers' business here.
+// while its fingers are around it (WaitForRelease). The clearances from the person are
+// not the fingers' business here.
 TEST(HandoverCycle, TheObjectRuleIsOffWhileTheFingersAreAroundTheObject) {
   HandoverCycle cycle(defaultCycleSettings());
   const auto& cm = cycle.collision().collisionModel();

@@ -97,30 +97,6 @@ TEST(HandoverR2H, FingersBackOutAlongTheApproachAxisBeforeTurningAway) {
   EXPECT_LT((moved + moved.dot(-approach) * approach).norm(), 0.02);     // not sideways
 }
 
-// The fingers open around the ball the receiver now holds: until it is clear
-// of them they are around it (fingersAroundObject), and the rule that keeps
-// the gripper off the object stays off. Switched on as BackOut began (the
-// payload cleared), it found a tilted tube 2.5 cm inside a finger's capsule
-// and pushed the gripper out at once, joint 6 past its speed limit
-// (g1093_00313). The clearances from the person stay as they were (relaxed,
-// the leaving hand slowed the back-out down), and the turn to the stow pose
-// keeps the gripper off everything again.
-TEST(HandoverR2H, TheOpenFingersAreAroundTheObjectUntilItIsClearOfThem) {
-  Rig rig(true, false, kBall);
-  ASSERT_TRUE(pulledIntoBackOut(rig)) << rig.fsm->activePath();
-  // the ball within the fingers' reach (BackOut::objectClear): of the line from 8 cm behind the
-  // TCP (the back-out's way) to the pads' tips, half the open width and a pad's half span
-  const HandoverParams& p = rig.fsm->params();
-  const Vector3 axis = rig.world.tcp.linear().col(2), from = rig.world.tcp.translation() - 0.08 * axis;
-  const double along = std::clamp((rig.world.object - from).dot(axis), 0.0, 0.08 + p.finger_pad_reach);
-  const double off = (rig.world.object - (from + along * axis)).norm() - kBall.size.x();
-  ASSERT_LT(off, 0.5 * p.gripper_open_width + p.finger_half_span) << "the ball already clear of the fingers";
-  EXPECT_TRUE(rig.ctl.fingers_around_object);
-  EXPECT_FALSE(rig.ctl.hand_relaxed);
-  ASSERT_TRUE(rig.runUntilState("Retract", 5.0)) << rig.fsm->activePath();
-  EXPECT_FALSE(rig.ctl.fingers_around_object);
-}
-
 // From the release on, the receiver takes the object away, here along the
 // axis the fingers close along: the opening gripper rides along with it as it
 // is seen (its rate fed forward), not along the approach axis, and only as
