@@ -598,8 +598,10 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   // away reads as the object's weight. Nor only across the floor: a person withdrawing
   // down and back pulled 20 N along their hand's way, 10 N across the floor only once
   // their hand went 0.4 m/s, and the arm dragged after them spun joint 6 past its speed
-  // limit (g1069_00050); the pull along the way the hand goes (carried) tells it 0.3 s sooner
-  const bool carried = carried_.carried(ctx, hold_time_, significance_);  // every cycle: its hold
+  // limit (g1069_00050); the pull along the way the hand goes (carried) tells it 0.3 s sooner.
+  // Going back toward where the hand was first seen: a person who moves the object on to
+  // where they hand it over pulls it along their way too (outsider m_24, a relocation)
+  const bool carried = carried_.carried(ctx, hold_time_, significance_, true);  // every cycle: its hold
   if (pull_.pulled(ctx, hold_time_) || carried || ctx.in.finger_width < ctx.params->gripper_empty_width) {
     setOutput(withdrawn_);
     return true;

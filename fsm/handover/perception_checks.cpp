@@ -82,6 +82,11 @@ bool carriedThrough(const HandoverContext& ctx, double force, double significanc
   return ctx.interaction.dot(v / speed) > force;
 }
 
+bool goingHome(const HandoverContext& ctx) {
+  if (!ctx.home_hand_known || !fresh(ctx.in.hand, ctx.params->max_data_age)) return false;
+  return ctx.in.hand.velocity.head<3>().dot(ctx.home_hand - ctx.in.hand.pose.translation()) > 0.0;
+}
+
 double positionError(const Isometry& a, const Isometry& b) {
   return (a.translation() - b.translation()).norm();
 }

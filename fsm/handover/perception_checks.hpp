@@ -67,6 +67,11 @@ bool pulledBack(const HandoverContext& ctx, double force, double hand_speed = 0.
 /// along the hand's way but 8 N across the floor toward its home
 /// (g1063_00185). RT safe.
 bool carriedThrough(const HandoverContext& ctx, double force, double significance);
+/// The person's hand, seen now, moves back toward where it was first seen
+/// (HandoverContext::home_hand; its velocity has a positive component that
+/// way, in 3D): a hand that leaves rather than one that brings the object
+/// elsewhere. False when either is unknown. RT safe.
+bool goingHome(const HandoverContext& ctx);
 /// Position error (m) and rotation angle error (rad) between two poses.
 double positionError(const Isometry& a, const Isometry& b);
 double rotationError(const Isometry& a, const Isometry& b);

@@ -23,10 +23,13 @@ class TakeBack {
   }
   /// True once the object has carried the open fingers along the hand's way
   /// (carriedThrough with take_back_force; `significance`: standard
-  /// deviations of the hand's speed that are noise) for `hold` s.
-  bool carried(const HandoverContext& ctx, double hold, double significance) {
+  /// deviations of the hand's speed that are noise) for `hold` s; with
+  /// `home_only`, only while the hand goes back toward where it was first
+  /// seen (goingHome: a person who moves the object the fingers hold
+  /// elsewhere is not taking it back).
+  bool carried(const HandoverContext& ctx, double hold, double significance, bool home_only = false) {
     const double f = ctx.params->take_back_force;
-    return lasted(ctx, hold, f > 0.0 && carriedThrough(ctx, f, significance));
+    return lasted(ctx, hold, f > 0.0 && carriedThrough(ctx, f, significance) && (!home_only || goingHome(ctx)));
   }
 
  private:

@@ -238,6 +238,18 @@ TEST(HandoverH2R, APersonWhoPullsTheHeldObjectDownAndAwayTakesItBack) {
   EXPECT_NEAR(rig.world.width, rig.world.object_width, 1e-3);
   EXPECT_EQ(rig.ctl.gripper_width, rig.fsm->params().gripper_open_width);
   EXPECT_EQ(rig.fsm->stats().handovers, 0);
+
+  // the same pull moving the object on, away from where the hand came from (a person who
+  // relocates what they hand over, outsider m_24): not taken back
+  Rig on;
+  on.world.moveHand(kMeet, 0.5);
+  ASSERT_TRUE(on.runUntilState("WaitForRelease", 10.0)) << on.fsm->activePath();
+  on.world.speed_std = 0.02;
+  const Vector3 onward = -way;
+  on.world.pull = pull * onward;
+  on.world.moveHand(on.world.hand + 0.02 * onward, 0.3);  // 2 cm: the fingers keep it
+  on.runFor(0.1);
+  EXPECT_TRUE(Rig::endsWith(on.fsm->activePath(), "WaitForRelease")) << on.fsm->activePath();
 }
 
 // Given up with the fingers around the object the person keeps (here: they
