@@ -283,7 +283,9 @@ class Grasp : public HandoverState {
 /// The person takes it back (params.withdraw.take_back_force, for hold_time):
 /// pulled toward where their hand came from across the floor, or along the way
 /// their hand goes once it moves (more than motion_significance standard
-/// deviations of its speed estimate): Withdrawn, the fingers open.
+/// deviations of its speed estimate) back toward where it was first seen
+/// (goingHome: one who moves the object on to where they hand it over pulls it
+/// along their way too, outsider m_24): Withdrawn, the fingers open.
 /// Keys: release_share (0..1) with release_distance (m), release_wait
 /// (s) and hold_share (0.05..release_share, default release_share), or
 /// release_fraction (0..2); hold_time (s); motion_significance (default 2).
