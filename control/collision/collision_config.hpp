@@ -42,9 +42,10 @@ struct DamperSettings {
 /// object in the person's hand), or only while they do and the person still
 /// carries it (`taking`: the robot's fingers close on the object in the
 /// person's hand; not while the robot carries it and a receiver's hand
-/// closes on it; nor once they hold it: the state machine's shared hold).
-/// The controller adapter switches the last three with the state machine's
-/// hand-clearance and shared-hold switches and the payload.
+/// closes on it; nor once they hold it: the state machine's
+/// fingers-around-object switch). The controller adapter switches the last
+/// three with the state machine's hand-clearance and fingers-around-object
+/// switches and the payload.
 enum class RuleScope { kAlways, kApart, kSharing, kTaking };
 
 /// A rule on only while the gripper shares the object with the person's hand

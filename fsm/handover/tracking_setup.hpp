@@ -39,12 +39,6 @@ inline void setTrackingGains(const HandoverParams& p, ControllerHandle& ctrl, Tr
   }
 }
 
-/// The phase gains for a tracked body moving at `speed` (m/s): at rest the
-/// phase's own stiff gains (kFollow: params.arrive_tracking_*, or in a `take`
-/// params.take_arrive_tracking_* where set; kAlign: params.align_tracking_*),
-/// the follow gains from the arrive speed on, linear between: soft while the
-/// person still brings the body in, stiff once it has arrived. Without
-/// arrive gains, the phase gains as they are. RT safe.
 /// A set-point held against the person (the fingers on the object, a
 /// presentation waiting for the pull) at the tracking's closing gains: the
 /// pose task's own K = 6, meant for retracts, is a weak spring at the wrist
@@ -54,6 +48,12 @@ inline void holdAtClosingGains(const HandoverParams& p, ControllerHandle& ctrl) 
   ctrl.setPoseStiffness(p.closing_tracking_translation_stiffness, p.closing_tracking_orientation_stiffness);
 }
 
+/// The phase gains for a tracked body moving at `speed` (m/s): at rest the
+/// phase's own stiff gains (kFollow: params.arrive_tracking_*, or in a `take`
+/// params.take_arrive_tracking_* where set; kAlign: params.align_tracking_*),
+/// the follow gains from the arrive speed on, linear between: soft while the
+/// person still brings the body in, stiff once it has arrived. Without
+/// arrive gains, the phase gains as they are. RT safe.
 inline void setPhaseGainsForSpeed(const HandoverParams& p, ControllerHandle& ctrl, TrackingGains phase, double speed,
                                   bool take = false) {
   const bool align = phase == TrackingGains::kAlign && p.align_tracking_translation_stiffness > 0.0 &&
