@@ -34,7 +34,10 @@ class WristDampingTask : public control::Task {
 inline void registerWristDamping(control::ControllerRegistry& registry) {
   registry.addTask("wrist_damping", [](const control::ElementArgs& a) {
     const double damping = a.params.child("damping").checkRange(a.params.getDouble("damping"), 0.0, 1000.0);
-    return control::BuiltTask{std::make_shared<WristDampingTask>(a.name, damping), a.params.getDouble("weight", 1e-3)};
+    control::BuiltTask built;
+    built.task = std::make_shared<WristDampingTask>(a.name, damping);
+    built.weight = a.params.getDouble("weight", 1e-3);
+    return built;
   });
 }
 

@@ -161,8 +161,9 @@ TEST(HandoverCycle, TheTakingRuleIsOnOnlyWhileSharingAnObjectThePersonCarries) {
   adapter.relaxHandClearance(false);
   EXPECT_FALSE(cycle.collision().ruleEnabled(taking));
   // no sensing budget on it: the hand and the object are where the fingers work
-  for (const control::CollisionPair& p : cm.pairs)
+  for (const control::CollisionPair& p : cm.pairs) {
     if (p.rule == taking) EXPECT_EQ(p.margin, 0.0);
+  }
 }
 
 // The gripper keeps off the object the person holds out (it lines up beside it) but not
