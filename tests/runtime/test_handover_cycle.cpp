@@ -162,7 +162,9 @@ TEST(HandoverCycle, TheTakingRuleIsOnOnlyWhileSharingAnObjectThePersonCarries) {
   EXPECT_FALSE(cycle.collision().ruleEnabled(taking));
   // no sensing budget on it: the hand and the object are where the fingers work
   for (const control::CollisionPair& p : cm.pairs) {
-    if (p.rule == taking) EXPECT_EQ(p.margin, 0.0);
+    if (p.rule == taking) {
+      EXPECT_EQ(p.margin, 0.0);
+    }
   }
 }
 
