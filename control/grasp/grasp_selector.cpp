@@ -54,16 +54,20 @@ bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, 
   if (!reached(p)) return false;
 
   ChainPoses poses;
-  const double floor = config_.table_height + config_.table_clearance;
+  // the current choice keeps its place within keep_tolerance of every test, as of the IK's: a grasp at
+  // the edge of a keep crossed it back and forth with the sensor's noise (1-2 mm), dropped and taken
+  // again every 0.1-0.3 s, and the target jumped between two grasps 10 cm apart for 10 s (g1101_00584)
+  const double band = keep ? config_.keep_tolerance.position : 0.0;
+  const double floor = config_.table_height + config_.table_clearance - band;
   ScoreTerms pre;
   if (has_pre) {
     chainPoses(model_, p.q, poses);
     if (lowestArmPoint(model_, poses) < floor) return false;
     // the arm passes the pre-grasp on its way in: inside the keeps there, it stopped at the person's
     // chest short of it until they let the ball fall (g727_00117)
-    if (config_.reject_inside_keeps && personBodyClearance(model_, poses, obstacles, num_obstacles) < 0.0) return false;
+    if (config_.reject_inside_keeps && personBodyClearance(model_, poses, obstacles, num_obstacles) < -band) return false;
     // where the arm lines up, the fingers are still in front of the object, not in it
-    if (heldObjectClearance(model_, poses, obstacles, num_obstacles) < 0.0) return false;
+    if (heldObjectClearance(model_, poses, obstacles, num_obstacles) < -band) return false;
     pre = scoreConfiguration(model_, frame_, poses, p.q, q_now, obstacles, num_obstacles, config_.score);
   }
   chainPoses(model_, g.q, poses);
@@ -71,11 +75,11 @@ bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, 
   // only the fingers go around the object in the person's hand: a grasp that puts the palm
   // (or the arm) in that hand is no grasp (a ball on the palm taken from the side: the palm
   // struck the hand under it)
-  if (workZoneClearance(model_, poses, obstacles, num_obstacles) < 0.0) return false;
+  if (workZoneClearance(model_, poses, obstacles, num_obstacles) < -band) return false;
   // nor one that brings any of it, the fingers too, nearer the person's arm or trunk than the collision
   // constraints let it go: the arm stopped short of it until the person gave up (g1_00184, a
   // ball on a palm taken at 45 degrees over the wrist)
-  if (config_.reject_inside_keeps && personBodyClearance(model_, poses, obstacles, num_obstacles) < 0.0) return false;
+  if (config_.reject_inside_keeps && personBodyClearance(model_, poses, obstacles, num_obstacles) < -band) return false;
   ScoreTerms t = scoreConfiguration(model_, frame_, poses, g.q, q_now, obstacles, num_obstacles, config_.score);
   if (has_pre) {
     // the arm must pass the pre-grasp too: the worse margin and clearance count

@@ -9,7 +9,9 @@
 // hysteresis too: a candidate becomes reachable when its IK converges to the
 // IK's tolerance, and the current choice stays reachable while its IK ends
 // within `keep_tolerance` (a target at the edge of the workspace crosses the
-// IK's tolerance back and forth with the sensor's noise). IK starts warm from each
+// IK's tolerance back and forth with the sensor's noise) and its clearances
+// (table, keeps, the person's hand and object) fall short of theirs by less
+// than keep_tolerance.position. IK starts warm from each
 // candidate's previous solution; a candidate without one (first update, or its
 // warm solve failed) is solved from the current q and every fixed seed on the
 // first update, keeping the best-scoring solution; later, such candidates get

@@ -473,6 +473,66 @@ TEST(GraspSelector, TheChosenGraspStaysReachableAcrossTheEdgeOfTheWorkspaceWithi
   EXPECT_FALSE(selector.update(bottleAt(Vector3(out + 0.03, 0.0, 0.3)), q).valid);
 }
 
+// Feasibility with hysteresis, as reachability: the choice stays while its configuration comes
+// nearer a body than the constraints keep by less than keep_tolerance.position; a fresh selection
+// does not take it there, and beyond the tolerance it is given up. A grasp at the edge of a keep
+// crossed it back and forth with the sensor's 1-2 mm of noise, and the target jumped between two
+// grasps 10 cm apart every 0.1-0.3 s for 10 s (g1101_00584).
+TEST(GraspSelector, TheChosenGraspStaysWhileItsConfigurationIsWithinTheKeepToleranceOfABodysKeep) {
+  const Model& model = testing::panda();
+  GraspSpec top;  // from above, fingers along y
+  top.placement.linear() = Eigen::AngleAxisd(M_PI, Vector3::UnitX()).toRotationMatrix();
+  const GraspSelectionConfig config = testing::shippedConfig();
+  const double band = config.keep_tolerance.position;
+  ASSERT_GT(band, 0.002);
+  const Isometry X_obj = bottleAt(Vector3(0.55, 0.0, 0.3));
+  GraspSelector selector(model, {top}, config);
+  const GraspChoice first = selector.update(X_obj, testing::readyConfiguration());
+  ASSERT_TRUE(first.valid);
+  const int chosen = first.index;
+  const Vector7 q = first.q_grasp;
+  // a body beside the grasp configuration's fingertips, `inside` m within the gripper's keep from it
+  ChainPoses poses;
+  chainPoses(model, q, poses);
+  const Vector3 side = first.grasp.linear().col(1);  // along the fingers' closing axis, outward
+  Vector3 tip = first.grasp.translation();
+  for (const Capsule& c : model.capsules) {
+    if (c.role != CapsuleRole::kFingertip) continue;
+    const Vector3 p = poses.oMb[c.body] * c.b;
+    if (p.dot(side) > tip.dot(side)) tip = p;  // the outer fingertip on that side
+  }
+  const auto bodyInside = [&](double inside) {
+    ObstacleCapsule body;
+    body.radius = 0.02;
+    body.keep_arm = 0.04;
+    body.keep_gripper = 0.005;
+    double near = 0.0, far = 0.3;  // its distance along `side` from the tip: clearance - (-inside) changes sign
+    for (int i = 0; i < 60; ++i) {
+      const double mid = 0.5 * (near + far);
+      body.a = body.b = tip + mid * side;
+      (personBodyClearance(model, poses, &body, 1) < -inside ? near : far) = mid;
+    }
+    body.a = body.b = tip + far * side;
+    return body;
+  };
+  const ObstacleCapsule just_inside = bodyInside(0.4 * band);
+  ASSERT_NEAR(personBodyClearance(model, poses, &just_inside, 1), -0.4 * band, 1e-4);
+  // a fresh selection does not take that grasp there
+  GraspSelector fresh(model, {top}, config);
+  const GraspChoice& f = fresh.update(X_obj, testing::readyConfiguration(), &just_inside, 1);
+  EXPECT_TRUE(!f.valid || f.index != chosen);
+  // the choice made before stays, again and again
+  for (int k = 0; k < 5; ++k) {
+    const GraspChoice& c = selector.update(X_obj, q, &just_inside, 1);
+    ASSERT_TRUE(c.valid) << "update " << k;
+    EXPECT_EQ(c.index, chosen) << "update " << k;
+  }
+  // beyond the tolerance it is given up
+  const ObstacleCapsule well_inside = bodyInside(3.0 * band);
+  const GraspChoice& c = selector.update(X_obj, q, &well_inside, 1);
+  EXPECT_TRUE(!c.valid || c.index != chosen);
+}
+
 TEST(GraspSelector, ReportsNoChoiceForAnObjectOutOfReach) {
   const Model& model = testing::panda();
   GraspSelector selector(model, {bottleSideGrasp()}, testing::shippedConfig());
