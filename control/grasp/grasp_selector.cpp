@@ -54,9 +54,10 @@ bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, 
   if (!reached(p)) return false;
 
   ChainPoses poses;
-  // the current choice keeps its place within keep_tolerance of every test, as of the IK's: a grasp at
-  // the edge of a keep crossed it back and forth with the sensor's noise (1-2 mm), dropped and taken
-  // again every 0.1-0.3 s, and the target jumped between two grasps 10 cm apart for 10 s (g1101_00584)
+  // the current choice passes every clearance test within keep_tolerance.position, as it passes the
+  // IK's within keep_tolerance: a grasp at the edge of a keep crossed it back and forth with the
+  // sensor's noise (1-2 mm), was dropped and taken again every 0.1-0.3 s, and the target jumped
+  // between two grasps 10 cm apart for 10 s (g1101_00584)
   const double band = keep ? config_.keep_tolerance.position : 0.0;
   const double floor = config_.table_height + config_.table_clearance - band;
   ScoreTerms pre;
