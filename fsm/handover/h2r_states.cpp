@@ -601,7 +601,7 @@ bool WaitForRelease::onRun(HandoverContext& ctx) {
   // limit (g1069_00050); the pull along the way the hand goes (carried) tells it 0.3 s sooner.
   // Going back toward where the hand was first seen: a person who moves the object on to
   // where they hand it over pulls it along their way too (outsider m_24, a relocation)
-  const bool carried = carried_.carried(ctx, hold_time_, significance_, true);  // every cycle: its hold
+  const bool carried = carried_.carried(ctx, hold_time_, significance_, /*home_only=*/true);  // every cycle: its hold
   if (pull_.pulled(ctx, hold_time_) || carried || ctx.in.finger_width < ctx.params->gripper_empty_width) {
     setOutput(withdrawn_);
     return true;
