@@ -23,6 +23,14 @@ cg::GraspSelectionConfig presentationSelectionConfig(cg::GraspSelectionConfig co
 }
 
 namespace {
+// what the constraints keep from that obstacle, apart and while the fingers share the object
+void applyKeep(cg::ObstacleCapsule& o, const PersonKeeps::Keep& k) {
+  o.keep_arm = k.arm;
+  o.keep_gripper = k.gripper;
+  o.keep_arm_sharing = k.arm_sharing;
+  o.keep_gripper_sharing = k.gripper_sharing;
+}
+
 std::vector<cg::GraspSpec> declaredPresentations(const control::Isometry& presentation, const control::Vector3& pivot,
                                                  const cg::GraspSelectionConfig& config) {
   cg::GraspSpec upright;
@@ -79,7 +87,7 @@ control::Vector3 receiverPull(const perception::HumanEstimate& person) {
 PersonKeeps personKeeps(const control::CollisionModel& model) {
   PersonKeeps k;
   for (const control::CollisionPair& p : model.pairs) {
-    if (control::whileSharing(model.rule_scope[static_cast<std::size_t>(p.rule)])) continue;
+    const control::RuleScope scope = model.rule_scope[static_cast<std::size_t>(p.rule)];
     PersonKeeps::Keep* keep = nullptr;
     switch (model.bodies[static_cast<std::size_t>(p.other_body)].kind) {
       case control::CollisionBodyKind::kHumanHand: keep = &k.hand; break;
@@ -91,8 +99,14 @@ PersonKeeps personKeeps(const control::CollisionModel& model) {
     }
     const double d = p.margin + p.damper.s_dist;
     const bool arm = model.bodies[static_cast<std::size_t>(p.robot_body)].role == control::CapsuleRole::kArm;
-    double& slot = arm ? keep->arm : keep->gripper;
-    slot = std::max(slot, d);
+    if (!control::whileSharing(scope)) {
+      double& slot = arm ? keep->arm : keep->gripper;
+      slot = std::max(slot, d);
+    }
+    if (scope != control::RuleScope::kApart) {
+      double& slot = arm ? keep->arm_sharing : keep->gripper_sharing;
+      slot = std::max(slot, d);
+    }
   }
   return k;
 }
@@ -101,8 +115,7 @@ cg::ObstacleCapsule heldObjectObstacle(const io::ObjectShape& shape, const contr
                                        const PersonKeeps::Keep& keep) {
   cg::ObstacleCapsule o;
   o.held_object = true;
-  o.keep_arm = keep.arm;
-  o.keep_gripper = keep.gripper;
+  applyKeep(o, keep);
   o.a = o.b = pose.translation();
   const control::Vector3& size = shape.size;
   switch (shape.kind) {
@@ -188,6 +201,22 @@ void GraspPlanning::copyChoice(const cg::GraspChoice& c, fsm::TrackingPlan& plan
   plan.q_pre = c.q_pre_grasp;
 }
 
+cg::ObstacleCapsule holdingHandObstacle(const GraspPlanningSettings& settings, const control::Isometry& hand) {
+  cg::ObstacleCapsule o;
+  if (settings.hand_box_half_extents.isZero()) {
+    o.a = o.b = hand.translation();
+    o.radius = settings.hand_radius;
+  } else {
+    const control::Isometry X = hand * settings.hand_box;
+    o.a = o.b = X.translation();
+    o.box_axes = X.linear();
+    o.box_half_extents = settings.hand_box_half_extents;
+  }
+  o.gripper_works_here = true;
+  applyKeep(o, settings.keeps.hand);
+  return o;
+}
+
 int GraspPlanning::trunkObstacles(const control::Isometry* torso) const {
   return torso == nullptr ? 0 : static_cast<int>(settings_.trunk.size());
 }
@@ -202,20 +231,17 @@ int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool 
     c.radius = radius;
     return c;
   };
-  auto keep = [](cg::ObstacleCapsule& c, const PersonKeeps::Keep& k) {
-    c.keep_arm = k.arm;
-    c.keep_gripper = k.gripper;
-  };
   obstacles_[0] = capsule(human.forearm, settings_.forearm_length, settings_.forearm_radius);
-  keep(obstacles_[0], settings_.keeps.forearm);
+  applyKeep(obstacles_[0], settings_.keeps.forearm);
   obstacles_[1] = capsule(human.upper_arm, settings_.upper_arm_length, settings_.upper_arm_radius);
-  keep(obstacles_[1], settings_.keeps.upper_arm);
+  applyKeep(obstacles_[1], settings_.keeps.upper_arm);
   int n = 2;
   if (holding_hand) {
-    // the hand that holds the object: the fingers work in it, the palm and the arm keep clear
-    obstacles_[2] = capsule(human.hand, 0.0, settings_.hand_radius);
-    obstacles_[2].gripper_works_here = true;
-    keep(obstacles_[2], settings_.keeps.hand);
+    // the hand that holds the object: the fingers work in it, the palm and the arm keep clear. Of
+    // the hand the constraints see (its box), not of a sphere around it: the sphere reached 3 cm
+    // past the palm's faces and ruled out every grasp of balls and boxes held low, by 0.3-8 mm
+    // (g1101_00613, g1109_00061), and the arm stalled at the declared grasp until the person gave up
+    obstacles_[2] = holdingHandObstacle(settings_, human.hand);
     n = 3;
   } else if (!settings_.hand_box_half_extents.isZero()) {
     // the hand the object goes into: the fingers come as near as the constraints let them (keepShortfall)
@@ -226,7 +252,7 @@ int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool 
     box.box_axes = X.linear();
     box.box_half_extents = settings_.hand_box_half_extents;
     box.keep_only = true;
-    keep(box, settings_.keeps.hand);
+    applyKeep(box, settings_.keeps.hand);
     n = 3;
   }
   if (torso == nullptr) return n;
@@ -235,7 +261,7 @@ int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool 
     o = c;
     o.a = *torso * c.a;
     o.b = *torso * c.b;
-    keep(o, settings_.keeps.trunk);
+    applyKeep(o, settings_.keeps.trunk);
   }
   return n;
 }

@@ -41,12 +41,14 @@ namespace handover::runtime {
 
 /// How far the collision constraints keep the arm's capsules and the
 /// gripper's (palm and fingers) from each part of the person while the gripper
-/// does not share the object with their hand (m: margin, sensing budget and
+/// does not share the object with their hand (arm, gripper) and while it does
+/// (arm_sharing, gripper_sharing: a take's grasp) (m: margin, sensing budget and
 /// sDist of the pairs; personKeeps). The selector does not plan a
 /// configuration nearer than that (control::grasp::personBodyClearance).
 struct PersonKeeps {
   struct Keep {
     double arm = 0.0, gripper = 0.0;
+    double arm_sharing = -1.0, gripper_sharing = -1.0;  ///< negative: as apart
   };
   Keep hand, forearm, upper_arm, trunk;
   Keep object;  ///< from the object the person holds out (the gripper lines up in front of it)
@@ -75,8 +77,11 @@ struct GraspPlanningSettings {
   io::ObjectShape object_shape;
   double forearm_length = 0.27, upper_arm_length = 0.33;  ///< m, the person's arm capsules
   double forearm_radius = 0.045, upper_arm_radius = 0.055;  ///< m
-  double hand_radius = 0.05;  ///< m, a sphere around the grip point (take: grasp away from the hand)
-  /// The hand box of the collision model (give: the presentation's gripper
+  /// m, a sphere around the grip point: a receiver's reach to a placement
+  /// (uprightPlacement), and a take's holding hand when no hand box is given
+  double hand_radius = 0.05;
+  /// The hand box of the collision model (a take: the hand that holds the
+  /// object, where only the fingers may go; a give: the presentation's gripper
   /// keeps from it what the constraints keep): centre and axes in the hand
   /// frame, half edges (m).
   control::Isometry hand_box = control::Isometry::Identity();
@@ -111,6 +116,16 @@ constexpr int kMaxTrunkObstacles = 4;
 /// gives an obstacle of radius 0 at its centre.
 control::grasp::ObstacleCapsule heldObjectObstacle(const io::ObjectShape& shape, const control::Isometry& pose,
                                                    const PersonKeeps::Keep& keep);
+
+/// The hand that holds the object out (a take) as a selector obstacle, where
+/// only the fingers may go (gripper_works_here, with the hand's keeps): the
+/// collision model's hand box (settings.hand_box, hand_box_half_extents) at
+/// `hand` (the grip point, world), or a sphere of hand_radius when no box is
+/// given. The sphere reached 3 cm past the palm's faces (and fell short of its
+/// corners): it ruled out every grasp of balls and boxes held low, by 0.3-8 mm
+/// (g1101_00613, g1109_00061), and the arm stalled at the declared grasp until
+/// the person gave up.
+control::grasp::ObstacleCapsule holdingHandObstacle(const GraspPlanningSettings& settings, const control::Isometry& hand);
 
 /// The trunk of the collision model (a torso box, a head sphere, the free
 /// arm's capsule; legs under the table are left out) as selector capsules in

@@ -78,8 +78,11 @@ double capsuleDistance(const ChainPoses& poses, const Capsule& c, const Obstacle
 }
 
 // what the collision constraints keep capsule `c` from obstacle `o` (m): the arm's or the gripper's keep
-double keepOf(const Capsule& c, const ObstacleCapsule& o) {
-  return c.role == CapsuleRole::kArm ? o.keep_arm : o.keep_gripper;
+double keepOf(const Capsule& c, const ObstacleCapsule& o, bool sharing = false) {
+  const bool arm = c.role == CapsuleRole::kArm;
+  const double shared = arm ? o.keep_arm_sharing : o.keep_gripper_sharing;
+  if (sharing && shared >= 0.0) return shared;
+  return arm ? o.keep_arm : o.keep_gripper;
 }
 
 }  // namespace
@@ -122,7 +125,7 @@ double heldObjectClearance(const Model& model, const ChainPoses& poses, const Ob
 }
 
 double personBodyClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
-                          int num_obstacles) {
+                          int num_obstacles, bool sharing) {
   double best = std::numeric_limits<double>::infinity();
   for (int k = 0; k < num_obstacles; ++k) {
     const ObstacleCapsule& o = obstacles[k];
@@ -130,7 +133,7 @@ double personBodyClearance(const Model& model, const ChainPoses& poses, const Ob
     for (const Capsule& c : model.capsules) {
       // the gripper works in the person's hand (workZoneClearance); the arm's links keep clear of it
       if (o.gripper_works_here && c.role != CapsuleRole::kArm) continue;
-      best = std::min(best, capsuleDistance(poses, c, o) - keepOf(c, o));
+      best = std::min(best, capsuleDistance(poses, c, o) - keepOf(c, o, sharing));
     }
   }
   return best;

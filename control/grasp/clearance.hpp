@@ -32,6 +32,12 @@ struct ObstacleCapsule {
   /// than that is one the arm cannot reach (personBodyClearance).
   double keep_arm = 0.0;
   double keep_gripper = 0.0;
+  /// m: the same while the fingers share the object with the person's hand
+  /// (the take's grasp itself: Grasp's rules, no sensing budget between the
+  /// gripper and the arm whose hand holds the object); personBodyClearance
+  /// with `sharing`. Negative: as keep_arm / keep_gripper.
+  double keep_arm_sharing = -1.0;
+  double keep_gripper_sharing = -1.0;
   /// Only its keeps count (keepShortfall, as for every obstacle the fingers
   /// do not work in): it adds no clearance penalty and no rejection. A give's
   /// receiving hand (the object goes onto it: the gripper may come as near as
@@ -88,10 +94,12 @@ double heldObjectClearance(const Model& model, const ChainPoses& poses, const Ob
 /// fingertips included, and the person's body (the forearm, upper arm and
 /// trunk; the hand where the fingers work only for the arm's capsules),
 /// beyond what the collision constraints keep from each
-/// (ObstacleCapsule::keep_arm, keep_gripper), m; negative: the arm would have
-/// to come nearer than its constraints let it; +infinity without obstacles.
+/// (ObstacleCapsule::keep_arm, keep_gripper; with `sharing`, the keeps while
+/// the fingers share the object with the person's hand), m; negative: the arm
+/// would have to come nearer than its constraints let it; +infinity without
+/// obstacles.
 double personBodyClearance(const Model& model, const ChainPoses& poses, const ObstacleCapsule* obstacles,
-                          int num_obstacles);
+                          int num_obstacles, bool sharing = false);
 
 /// Lowest point (world z, m) of the capsules of bodies `first_body`.. (the
 /// base and link 1 stand on the table and are left out with first_body = 2).

@@ -79,8 +79,11 @@ bool GraspSelector::solvePair(const Isometry& grasp, const Isometry& pre_grasp, 
   if (workZoneClearance(model_, poses, obstacles, num_obstacles) < -band) return false;
   // nor one that brings any of it, the fingers too, nearer the person's arm or trunk than the collision
   // constraints let it go: the arm stopped short of it until the person gave up (g1_00184, a
-  // ball on a palm taken at 45 degrees over the wrist)
-  if (config_.reject_inside_keeps && personBodyClearance(model_, poses, obstacles, num_obstacles) < -band) return false;
+  // ball on a palm taken at 45 degrees over the wrist). There the fingers share the object with the
+  // person's hand (a take's grasp: the constraints keep the gripper only sDist from the arm that
+  // holds it); the pre-grasp, on the way in, keeps what the approach keeps
+  if (config_.reject_inside_keeps && personBodyClearance(model_, poses, obstacles, num_obstacles, has_pre) < -band)
+    return false;
   ScoreTerms t = scoreConfiguration(model_, frame_, poses, g.q, q_now, obstacles, num_obstacles, config_.score);
   if (has_pre) {
     // the arm must pass the pre-grasp too: the worse margin and clearance count

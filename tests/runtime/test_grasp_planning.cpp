@@ -366,6 +366,47 @@ TEST(GraspPlanning, KeepsWhatTheShippedCollisionRulesKeepFromThePerson) {
   EXPECT_NEAR(k.object.gripper, object->margin + object->damper.s_dist, 1e-12);
   EXPECT_NEAR(k.object.arm, object->margin + object->damper.s_dist, 1e-12);
   EXPECT_GT(k.object.gripper, 0.0);
+  // while the fingers share the object (a take's grasp): the gripper keeps the sharing rule's sDist
+  // from the person's arm, no sensing budget; the arm and the trunk keep what they always keep
+  const auto sharing = std::find_if(cfg.pairs.begin(), cfg.pairs.end(),
+                                    [](const control::PairRule& r) { return r.name == "person_arm_gripper_sharing"; });
+  ASSERT_NE(sharing, cfg.pairs.end());
+  EXPECT_NEAR(k.forearm.gripper_sharing, sharing->margin + sharing->damper.s_dist, 1e-12);
+  EXPECT_NEAR(k.upper_arm.gripper_sharing, sharing->margin + sharing->damper.s_dist, 1e-12);
+  EXPECT_LT(k.forearm.gripper_sharing, k.forearm.gripper - budget + 1e-12);
+  EXPECT_NEAR(k.forearm.arm_sharing, k.forearm.arm, 1e-12);
+  EXPECT_NEAR(k.trunk.arm_sharing, k.trunk.arm, 1e-12);
+  EXPECT_NEAR(k.trunk.gripper_sharing, k.trunk.gripper, 1e-12);
+}
+
+// The hand that holds the object out is, to the planner, the box the constraints see (where only the
+// fingers may go), not a sphere around it: a palm 3 cm above the hand's face is clear of it.
+TEST(GraspPlanning, TheHandThatHoldsTheObjectIsTheCollisionModelsHandBox) {
+  GraspPlanningSettings s = bottleSettings(false);
+  s.hand_radius = 0.045;
+  s.hand_box_half_extents = control::Vector3(0.045, 0.04, 0.015);
+  s.keeps.hand = {0.04, 0.02, 0.04, 0.002};
+  control::Isometry hand = control::Isometry::Identity();
+  hand.translation() = control::Vector3(0.5, 0.1, 0.2);
+  hand.linear() = Eigen::AngleAxisd(0.7, control::Vector3::UnitZ()).toRotationMatrix();
+  const cg::ObstacleCapsule box = holdingHandObstacle(s, hand);
+  EXPECT_TRUE(box.gripper_works_here);
+  EXPECT_EQ(box.box_half_extents, s.hand_box_half_extents);
+  EXPECT_TRUE(box.box_axes.isApprox(hand.linear()));
+  EXPECT_EQ(box.keep_arm, 0.04);
+  EXPECT_EQ(box.keep_gripper_sharing, 0.002);
+  // a segment across the hand 3 cm above its face (the palm of a grasp from above): outside the box
+  const control::Vector3 up = hand.linear().col(2);
+  const control::Vector3 p0 = hand * control::Vector3(-0.05, 0.0, 0.03), p1 = hand * control::Vector3(0.05, 0.0, 0.03);
+  EXPECT_NEAR(cg::segmentBoxDistance(p0, p1, box.a, box.box_axes, box.box_half_extents), 0.015, 1e-9);
+  EXPECT_GT((p0 - hand.translation()).dot(up), 0.0);
+  // no box given: the sphere, which that segment is inside
+  GraspPlanningSettings no_box = s;
+  no_box.hand_box_half_extents.setZero();
+  const cg::ObstacleCapsule sphere = holdingHandObstacle(no_box, hand);
+  EXPECT_TRUE(sphere.box_half_extents.isZero());
+  EXPECT_EQ(sphere.radius, 0.045);
+  EXPECT_LT(cg::segmentDistance(p0, p1, sphere.a, sphere.b) - sphere.radius, 0.0);
 }
 TEST(GraspPlanning, AHeldObjectWaitsOutOfTheWayOfTheReceiverWhoWillReachForIt) {
   // a receiver in front and to the right, their shoulder above the table; the

@@ -128,6 +128,28 @@ TEST(Clearance, AHeldObjectCountsOnlyForTheHeldObjectClearanceAndThereTheFingert
   EXPECT_GT(heldObjectClearance(model, poses, &ball, 1), 0.0);
 }
 
+// While the fingers share the object with the person's hand (a take's grasp) the constraints keep
+// other distances (no sensing budget between the gripper and the arm that holds it): with `sharing`
+// the clearance is measured beyond those keeps, and beyond the usual ones where none is given.
+TEST(Clearance, WhileSharingTheClearanceIsBeyondTheSharingKeeps) {
+  const Model& model = testing::panda();
+  ChainPoses poses;
+  ObstacleCapsule body = sphereBelowTheReadyTcp(0.20, 0.02, poses);  // clear of every capsule
+  const double distance = armClearance(model, poses, &body, 1);
+  ASSERT_GT(distance, 0.05);
+  body.keep_arm = body.keep_gripper = 0.03;
+  const double apart = personBodyClearance(model, poses, &body, 1);
+  EXPECT_EQ(personBodyClearance(model, poses, &body, 1, true), apart);  // no sharing keeps: the same
+  body.keep_arm_sharing = body.keep_gripper_sharing = 0.005;
+  EXPECT_NEAR(personBodyClearance(model, poses, &body, 1, true), apart + 0.025, 1e-12);
+  EXPECT_EQ(personBodyClearance(model, poses, &body, 1), apart);  // apart: the usual keeps still
+  // the arm's and the gripper's each: only the gripper's comes nearer while sharing
+  body.keep_arm_sharing = 0.03;
+  const double sharing = personBodyClearance(model, poses, &body, 1, true);
+  EXPECT_GE(sharing, apart);
+  EXPECT_LE(sharing, apart + 0.025 + 1e-12);
+}
+
 // a box by a dense sampling of the segment, each point's distance exact (clamped to the box)
 double sampledBoxDistance(const Vector3& p0, const Vector3& p1, const Vector3& centre, const Matrix3& axes,
                           const Vector3& half) {

@@ -473,6 +473,29 @@ TEST(GraspSelector, TheChosenGraspStaysReachableAcrossTheEdgeOfTheWorkspaceWithi
   EXPECT_FALSE(selector.update(bottleAt(Vector3(out + 0.03, 0.0, 0.3)), q).valid);
 }
 
+// A body beside the outer fingertip of configuration `q` on the side of `grasp`'s closing axis, placed
+// (bisected along that axis) where personBodyClearance(sharing) is `clearance` (m).
+ObstacleCapsule bodyBesideTheFingertips(const Model& model, const Vector7& q, const Isometry& grasp, ObstacleCapsule body,
+                                        double clearance, bool sharing) {
+  ChainPoses poses;
+  chainPoses(model, q, poses);
+  const Vector3 side = grasp.linear().col(1);
+  Vector3 tip = grasp.translation();
+  for (const Capsule& c : model.capsules) {
+    if (c.role != CapsuleRole::kFingertip) continue;
+    const Vector3 p = poses.oMb[c.body] * c.b;
+    if (p.dot(side) > tip.dot(side)) tip = p;
+  }
+  double near = 0.0, far = 0.3;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (near + far);
+    body.a = body.b = tip + mid * side;
+    (personBodyClearance(model, poses, &body, 1, sharing) < clearance ? near : far) = mid;
+  }
+  body.a = body.b = tip + far * side;
+  return body;
+}
+
 // Feasibility with hysteresis, as reachability: the choice stays while its configuration comes
 // nearer a body than the constraints keep by less than keep_tolerance.position; a fresh selection
 // does not take it there, and beyond the tolerance it is given up. A grasp at the edge of a keep
@@ -494,26 +517,12 @@ TEST(GraspSelector, TheChosenGraspStaysWhileItsConfigurationIsWithinTheKeepToler
   // a body beside the grasp configuration's fingertips, `inside` m within the gripper's keep from it
   ChainPoses poses;
   chainPoses(model, q, poses);
-  const Vector3 side = first.grasp.linear().col(1);  // along the fingers' closing axis, outward
-  Vector3 tip = first.grasp.translation();
-  for (const Capsule& c : model.capsules) {
-    if (c.role != CapsuleRole::kFingertip) continue;
-    const Vector3 p = poses.oMb[c.body] * c.b;
-    if (p.dot(side) > tip.dot(side)) tip = p;  // the outer fingertip on that side
-  }
+  ObstacleCapsule proto;
+  proto.radius = 0.02;
+  proto.keep_arm = 0.04;
+  proto.keep_gripper = 0.005;
   const auto bodyInside = [&](double inside) {
-    ObstacleCapsule body;
-    body.radius = 0.02;
-    body.keep_arm = 0.04;
-    body.keep_gripper = 0.005;
-    double near = 0.0, far = 0.3;  // its distance along `side` from the tip: clearance - (-inside) changes sign
-    for (int i = 0; i < 60; ++i) {
-      const double mid = 0.5 * (near + far);
-      body.a = body.b = tip + mid * side;
-      (personBodyClearance(model, poses, &body, 1) < -inside ? near : far) = mid;
-    }
-    body.a = body.b = tip + far * side;
-    return body;
+    return bodyBesideTheFingertips(model, q, first.grasp, proto, -inside, false);
   };
   const ObstacleCapsule just_inside = bodyInside(0.4 * band);
   ASSERT_NEAR(personBodyClearance(model, poses, &just_inside, 1), -0.4 * band, 1e-4);
@@ -531,6 +540,53 @@ TEST(GraspSelector, TheChosenGraspStaysWhileItsConfigurationIsWithinTheKeepToler
   const ObstacleCapsule well_inside = bodyInside(3.0 * band);
   const GraspChoice& c = selector.update(X_obj, q, &well_inside, 1);
   EXPECT_TRUE(!c.valid || c.index != chosen);
+}
+
+// The grasp itself is where the fingers share the object with the person's hand: there the
+// constraints keep the gripper only the sharing rules' distance from the arm that holds it (no
+// sensing budget), and the selection measures it against that. The pre-grasp, on the way in, is
+// measured against what the approach keeps. Against the approach's keeps at the grasp too, balls
+// and boxes held low had no grasp left at all (g1109_00061: the forearm 1.15 cm inside them).
+TEST(GraspSelector, TheGraspIsJudgedOnTheSharingKeepsAndThePreGraspOnTheApproachs) {
+  const Model& model = testing::panda();
+  GraspSpec top;  // from above, fingers along y
+  top.placement.linear() = Eigen::AngleAxisd(M_PI, Vector3::UnitX()).toRotationMatrix();
+  const GraspSelectionConfig config = testing::shippedConfig();
+  const Isometry X_obj = bottleAt(Vector3(0.55, 0.0, 0.3));
+  GraspSelector free(model, {top}, config);
+  const GraspChoice first = free.update(X_obj, testing::readyConfiguration());
+  ASSERT_TRUE(first.valid);
+  ObstacleCapsule forearm;
+  forearm.radius = 0.035;
+  forearm.keep_arm = forearm.keep_arm_sharing = 0.04;
+  forearm.keep_gripper = 0.021;          // apart: sDist and the sensing budget
+  forearm.keep_gripper_sharing = 0.005;  // sharing: sDist alone
+  // 1 cm inside the approach's keep at the grasp, 0.6 cm beyond the sharing keep
+  const ObstacleCapsule body = bodyBesideTheFingertips(model, first.q_grasp, first.grasp, forearm, -0.01, false);
+  {
+    ChainPoses poses;
+    chainPoses(model, first.q_grasp, poses);
+    ASSERT_NEAR(personBodyClearance(model, poses, &body, 1), -0.01, 1e-4);
+    ASSERT_NEAR(personBodyClearance(model, poses, &body, 1, true), 0.006, 1e-4);
+    chainPoses(model, first.q_pre_grasp, poses);
+    ASSERT_GT(personBodyClearance(model, poses, &body, 1), 0.0);  // the pre-grasp is clear of it
+  }
+  GraspSelector sharing(model, {top}, config);
+  const GraspChoice& c = sharing.update(X_obj, testing::readyConfiguration(), &body, 1);
+  ASSERT_TRUE(c.valid);
+  EXPECT_TRUE(sharing.evaluations()[static_cast<std::size_t>(first.index)].feasible);
+  // the same body without sharing keeps (the approach's everywhere): that grasp is refused
+  ObstacleCapsule apart_only = body;
+  apart_only.keep_arm_sharing = apart_only.keep_gripper_sharing = -1.0;
+  GraspSelector apart(model, {top}, config);
+  apart.update(X_obj, testing::readyConfiguration(), &apart_only, 1);
+  EXPECT_FALSE(apart.evaluations()[static_cast<std::size_t>(first.index)].feasible);
+  // and the pre-grasp keeps the approach's: that body as near the pre-grasp's fingertips is refused
+  const ObstacleCapsule at_pre =
+      bodyBesideTheFingertips(model, first.q_pre_grasp, first.pre_grasp, forearm, -0.01, false);
+  GraspSelector pre(model, {top}, config);
+  pre.update(X_obj, testing::readyConfiguration(), &at_pre, 1);
+  EXPECT_FALSE(pre.evaluations()[static_cast<std::size_t>(first.index)].feasible);
 }
 
 TEST(GraspSelector, ReportsNoChoiceForAnObjectOutOfReach) {
