@@ -115,7 +115,9 @@ bool WaitForPerson::onRun(HandoverContext& ctx) {
   // approach it starts is not ended at once. A receiver's hand 5 mm past the box's side was never
   // taken for one that came, and the give ended aborted (g421_00123)
   constexpr double kRestPlace = 0.05;  // m, as WaitAgain's home_radius: still where it was first seen
-  const bool left_home = home != nullptr && (pos - *home).norm() > std::max(kRestPlace, home_radius_);
+  // (how far it went, low-passed: a young track's prediction from a few noisy samples put the object
+  // 5 cm off for 15 ms, and the arm set off toward a person who had not moved, h2r_noise_1cm)
+  const bool left_home = home != nullptr && fromHome(ctx, hand_) > std::max(kRestPlace, home_radius_);
   const bool in_workspace = inWorkspace(ctx, hand_) || (left_home && latestPlan(ctx, hand_).valid &&
                                                         inWorkspace(ctx, hand_, p.withdraw_workspace_margin));
   const bool usable = fresh(body, p.max_data_age) && in_workspace && (!hand_ || ctx.in.hand_open);

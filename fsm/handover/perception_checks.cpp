@@ -29,6 +29,8 @@ double farthestFromHome(const HandoverContext& ctx, bool hand) {
   return hand ? ctx.hand_farthest_from_home : ctx.object_farthest_from_home;
 }
 
+double fromHome(const HandoverContext& ctx, bool hand) { return hand ? ctx.hand_from_home : ctx.object_from_home; }
+
 bool headingHome(const HandoverContext& ctx, bool hand) {
   // heading there, not only drifting that way: a person who moves the hand on to where they
   // settle was taken for one who withdraws

@@ -15,6 +15,8 @@ const Vector3* homeOf(const HandoverContext& ctx, bool hand);
 /// gone from its home, its distance low-passed by params.away_time_constant
 /// (HandoverContext::*_farthest_from_home).
 double farthestFromHome(const HandoverContext& ctx, bool hand);
+/// m: how far the hand (or the object) is from home now, low-passed as farthestFromHome's.
+double fromHome(const HandoverContext& ctx, bool hand);
 /// Speed of `body` toward `center` (m/s, > 0 when approaching).
 double speedToward(const Vector3& center, const SensedBody& body);
 /// A usable and recent sample.

@@ -127,6 +127,33 @@ TEST(HandoverH2R, AnObjectRestingWhereItWasFirstSeenIsOfferedOnlyOnceItWasHeldTh
   EXPECT_LT(moved.world.time - arrived, settle + 0.1);
 }
 
+// Left home is a distance from where the object was first seen that lasts, low-passed as the
+// excursion that tells a withdrawal (params.withdraw.away_time_constant): a young track's
+// prediction from a few noisy samples put the object 5 cm off for 15 ms, and an object the arm
+// reaches where the person holds it at their side was taken for one brought in: the approach began
+// 0.03 s into the run and ended withdrawn at once (h2r_noise_1cm: a retry lost).
+TEST(HandoverH2R, AnEstimatesTransientAwayFromHomeIsNoOffer) {
+  for (const double transient : {0.015, 0.5}) {
+    SCOPED_TRACE(transient);
+    Rig rig;
+    rig.world.object_plan.valid = true;  // the arm's kinematics reach the object wherever it is
+    const Vector3 home = rig.world.hand;
+    const Vector3 toward = (kMeet - home).normalized();
+    rig.person = [&](World& w) {
+      if (w.time >= 0.02 && w.time < 0.02 + transient) w.moveHand(home + 0.08 * toward, 10.0);
+      else if (w.time >= 0.02 + transient) w.moveHand(home, 10.0);
+    };
+    if (transient < 0.1) {
+      rig.runFor(0.02 + transient + 0.5);
+      EXPECT_TRUE(Rig::endsWith(rig.fsm->activePath(), "WaitForOffer")) << rig.fsm->activePath();
+      EXPECT_EQ(rig.fsm->stats().aborts, 0);
+    } else {
+      // one that stays out, coming toward the robot, is brought in
+      EXPECT_TRUE(rig.runUntilState("Approach", 0.02 + transient)) << rig.fsm->activePath();
+    }
+  }
+}
+
 // Coming is a speed toward the robot the estimate is sure of: a young track
 // of a hand at rest reads the sensor's noise as 0.1-0.25 m/s (approaches began
 // 0.04 s into the run). With that jitter reported as the estimate's standard
