@@ -245,14 +245,11 @@ int GraspPlanning::personObstacles(const perception::HumanEstimate& human, bool 
     n = 3;
   } else if (!settings_.hand_box_half_extents.isZero()) {
     // the hand the object goes into: the fingers come as near as the constraints let them (keepShortfall)
+    // (the same box as a take's holding hand, counted for its keeps only)
     cg::ObstacleCapsule& box = obstacles_[2];
-    box = cg::ObstacleCapsule{};
-    const control::Isometry X = human.hand * settings_.hand_box;
-    box.a = box.b = X.translation();
-    box.box_axes = X.linear();
-    box.box_half_extents = settings_.hand_box_half_extents;
+    box = holdingHandObstacle(settings_, human.hand);
+    box.gripper_works_here = false;
     box.keep_only = true;
-    applyKeep(box, settings_.keeps.hand);
     n = 3;
   }
   if (torso == nullptr) return n;
